@@ -1,0 +1,40 @@
+#pragma once
+// Diagnostics returned as data (STYLE.md: MuJoCo's warnings are counted in the data, not printed).
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace softtune {
+
+enum class WarningCode {
+  nyquist_clamped,         ///< exact mode: omega_d h > pi, clamped. value: asked Hz, limit: used Hz
+  above_nyquist,           ///< standard mode: asked frequency above fps/2. value: Hz, limit: Nyquist Hz
+  gamma_unrepresentable,   ///< exact mode, zeta = 0: c' + h k' = 0, report k', c' only
+  exact_overflow,          ///< exact mode: k', c' overflow a double; standard softness used instead
+  no_constraint,           ///< k = c = 0: the constraint does nothing
+  few_steps_per_period,    ///< fewer than 4 steps per period (the talk's rule of thumb). value: steps
+  frequency_error,         ///< standard mode misses the asked frequency by more than 5 %. value: relative
+  axis_normalized,         ///< constraint axis was not unit length. value: its length
+  box2d_v3_clamped,        ///< Box2D v3 clamps joint hertz to 0.25/h. value: Hz asked, limit: Hz clamp
+  mujoco_direct_solref,    ///< timeconst < 2h: MuJoCo would clamp it; the direct form is exported
+  box2d_reduced_mass_error,  ///< b2LinearStiffness's reduced mass misses the frequency. value: relative
+  engine_note,             ///< an engine cannot express this tuning exactly. text says which
+};
+
+struct Warning {
+  WarningCode code;
+  double value = 0.0;  ///< the offending value (units per code above)
+  double limit = 0.0;  ///< the limit or the value used instead
+  std::string_view engine = {};  ///< for engine warnings: which engine
+};
+
+using Warnings = std::vector<Warning>;
+
+/// snake_case code, e.g. "nyquist_clamped".
+std::string_view warning_code_name(WarningCode code);
+
+/// A sentence a designer can read, with the numbers and, where there is one, the fix.
+std::string warning_message(const Warning& w);
+
+}  // namespace softtune

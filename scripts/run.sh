@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Sets up, builds and starts softtune's main job. Arguments replace the default command.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+scripts/build.sh
+if (($#)); then exec build/softtune "$@"; fi
+exec build/softtune tune --frames 12 --oscillation some --mass 2 --fps 60 --mode exact

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Installs what softtune needs on a Debian 12 machine: the Debian packages (apt-get, as root) and the
+# page's npm packages (npm ci). Safe to run again: it only installs what is missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# One list for the whole project; each entry says which part needs it.
+packages=(
+  cmake g++ make pkg-config          # build
+  libeigen3-dev                      # core math
+  nlohmann-json3-dev                 # server: JSON codec
+  libgtest-dev libbenchmark-dev      # tests, benchmarks
+  libbox2d-dev                       # core/scene: Box2D 2.4 scenes
+  libosmesa6-dev libpng-dev          # render: off-screen frames, PNG
+  libcpp-httplib-dev                 # server: HTTP
+  nodejs npm chromium                # web page, browser tests
+  wrk                                # bench: HTTP load
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if ((${#missing[@]})); then
+  if [[ $(id -u) -eq 0 ]]; then
+    echo "setup: installing ${missing[*]}"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  else
+    echo "setup: missing Debian packages: ${missing[*]}" >&2
+    echo "setup: run as root, or: sudo apt-get install ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+
+if [[ -f package.json ]] && { [[ ! -d node_modules ]] || [[ package-lock.json -nt node_modules ]]; }; then
+  echo "setup: npm ci"
+  npm ci --no-audit --no-fund --loglevel=error
+  touch node_modules
+fi

@@ -1,0 +1,42 @@
+#pragma once
+// What every CLI command shares: flags, reading a request (file or stdin), printing JSON, and turning
+// a Problem into exit code 2 with problem JSON on stderr.
+
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "cli/commands.h"
+
+namespace softtune::cli {
+
+inline constexpr int kExitOk = 0, kExitFailed = 1, kExitBadInput = 2;
+
+/// Parsed `--name value` pairs and bare `--switch`es; positional arguments in order.
+struct Flags {
+  std::map<std::string, std::string> values;
+  std::vector<std::string> positional;
+  bool has(const std::string& name) const { return values.contains(name); }
+  std::optional<std::string> get(const std::string& name) const;
+};
+
+/// Parses args; `switches` take no value. Unknown flags are refused (Problem naming the flag).
+Flags parse_flags(const Args& args, const std::vector<std::string>& with_value,
+                  const std::vector<std::string>& switches);
+
+/// A flag's value as a number (Problem naming the flag when it is not one).
+double flag_number(const Flags& f, const std::string& name);
+
+/// Reads the JSON document in FILE, or stdin for "-".
+nlohmann::json read_request_file(const std::string& path);
+
+/// Prints a JSON document on stdout.
+void print_json(const nlohmann::json& doc);
+
+/// Runs `body`; a Problem goes to stderr as problem JSON with exit code 2, any other exception as a
+/// problem with status 500 and exit code 1.
+int guarded(const std::function<int()>& body);
+
+}  // namespace softtune::cli

@@ -1,0 +1,13 @@
+#pragma once
+// Every `softtune` subcommand. Each lives in its own cmd_*.cpp; main.cpp holds the table.
+
+#include <string>
+#include <vector>
+
+namespace softtune::cli {
+
+using Args = std::vector<std::string>;
+
+int run_tune(const Args& args);
+
+}  // namespace softtune::cli

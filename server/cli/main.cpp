@@ -1,0 +1,36 @@
+// softtune: one binary, one subcommand per job. The table below is the whole CLI surface.
+#include <cstring>
+#include <iostream>
+
+#include "cli/commands.h"
+
+namespace {
+
+struct Command {
+  const char* name;
+  const char* summary;
+  int (*run)(const softtune::cli::Args&);
+};
+
+constexpr Command kCommands[] = {
+    {"tune", "designer request -> k, c, gamma, beta, ERP/CFM, engine export, stability", softtune::cli::run_tune},
+};
+
+int usage(std::ostream& out, int code) {
+  out << "usage: softtune COMMAND [options]   (softtune COMMAND --help for each)\n\ncommands:\n";
+  for (const Command& c : kCommands) out << "  " << c.name << std::string(12 - std::strlen(c.name), ' ') << c.summary << '\n';
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) return usage(std::cerr, 2);
+  const std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help") return usage(std::cout, 0);
+  for (const Command& c : kCommands) {
+    if (name == c.name) return c.run(softtune::cli::Args(argv + 2, argv + argc));
+  }
+  std::cerr << "softtune: unknown command \"" << name << "\"\n";
+  return usage(std::cerr, 2);
+}

@@ -1,0 +1,119 @@
+#include "codec/json_reader.h"
+
+#include <cmath>
+
+#include "codec/problem.h"
+
+namespace softtune::codec {
+
+nlohmann::json parse_json(std::string_view text) {
+  // Keys seen in each open object, to refuse duplicates (nlohmann keeps the last one silently).
+  std::vector<std::set<std::string>> open_objects;
+  auto callback = [&open_objects](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using E = nlohmann::json::parse_event_t;
+    if (depth > kMaxJsonDepth) {
+      throw malformed_json("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    }
+    if (event == E::object_start) open_objects.emplace_back();
+    if (event == E::object_end && !open_objects.empty()) open_objects.pop_back();
+    if (event == E::key && !open_objects.empty()) {
+      const std::string& key = parsed.get_ref<const std::string&>();
+      if (!open_objects.back().insert(key).second) {
+        throw Problem(400, "Malformed JSON", key, "duplicated key \"" + key + "\"");
+      }
+    }
+    return true;
+  };
+  try {
+    return nlohmann::json::parse(text.begin(), text.end(), callback);
+  } catch (const nlohmann::json::exception& e) {
+    throw malformed_json(e.what());
+  }
+}
+
+ObjectReader::ObjectReader(const nlohmann::json& object, std::string path)
+    : json_(object), path_(std::move(path)) {}
+
+std::string ObjectReader::field(std::string_view key) const {
+  return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+}
+
+bool ObjectReader::has(std::string_view key) const { return json_.contains(key); }
+
+const nlohmann::json* ObjectReader::raw(std::string_view key) {
+  auto it = json_.find(key);
+  if (it == json_.end()) return nullptr;
+  read_.emplace(key);
+  return &*it;
+}
+
+std::optional<double> ObjectReader::number(std::string_view key) {
+  const nlohmann::json* v = raw(key);
+  if (!v) return std::nullopt;
+  if (!v->is_number()) throw invalid_field(field(key), "must be a number");
+  const double d = v->get<double>();
+  if (!std::isfinite(d)) throw invalid_field(field(key), "must be a finite number");
+  return d;
+}
+
+std::optional<long long> ObjectReader::integer(std::string_view key) {
+  const nlohmann::json* v = raw(key);
+  if (!v) return std::nullopt;
+  if (v->is_number_integer()) return v->get<long long>();
+  if (v->is_number_float()) {
+    const double d = v->get<double>();
+    if (std::isfinite(d) && d == std::floor(d) && std::abs(d) < 9e15) return static_cast<long long>(d);
+  }
+  throw invalid_field(field(key), "must be an integer");
+}
+
+std::optional<std::string> ObjectReader::string(std::string_view key) {
+  const nlohmann::json* v = raw(key);
+  if (!v) return std::nullopt;
+  if (!v->is_string()) throw invalid_field(field(key), "must be a string");
+  return v->get<std::string>();
+}
+
+std::optional<std::vector<double>> ObjectReader::numbers(std::string_view key, std::size_t n) {
+  const nlohmann::json* v = raw(key);
+  if (!v) return std::nullopt;
+  const std::string rule = "must be an array of " + std::to_string(n) + " finite numbers";
+  if (!v->is_array() || v->size() != n) throw invalid_field(field(key), rule);
+  std::vector<double> out;
+  for (const auto& e : *v) {
+    if (!e.is_number() || !std::isfinite(e.get<double>())) throw invalid_field(field(key), rule);
+    out.push_back(e.get<double>());
+  }
+  return out;
+}
+
+std::optional<ObjectReader> ObjectReader::object(std::string_view key) {
+  const nlohmann::json* v = raw(key);
+  if (!v) return std::nullopt;
+  if (!v->is_object()) throw invalid_field(field(key), "must be an object");
+  return ObjectReader(*v, field(key));
+}
+
+std::optional<std::size_t> ObjectReader::choice(std::string_view key, const std::vector<std::string_view>& choices) {
+  const std::optional<std::string> s = string(key);
+  if (!s) return std::nullopt;
+  for (std::size_t i = 0; i < choices.size(); ++i) {
+    if (*s == choices[i]) return i;
+  }
+  std::string rule = "must be one of";
+  for (std::size_t i = 0; i < choices.size(); ++i) rule += (i ? ", \"" : " \"") + std::string(choices[i]) + "\"";
+  throw invalid_field(field(key), rule);
+}
+
+void ObjectReader::finish() const {
+  for (auto it = json_.begin(); it != json_.end(); ++it) {
+    if (!read_.contains(it.key())) throw invalid_field(field(it.key()), "is not a known field");
+  }
+}
+
+ObjectReader read_object(const nlohmann::json& doc, std::string path) {
+  if (!doc.is_object()) throw invalid_field(path, "must be a JSON object");
+  return ObjectReader(doc, std::move(path));
+}
+
+}  // namespace softtune::codec

@@ -1,0 +1,22 @@
+#pragma once
+// Writing core types as JSON. No NaN or infinity ever reaches the output: a value that is not finite
+// is written as null, and callers document where null can appear.
+
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "softtune/tune.h"
+#include "softtune/warnings.h"
+
+namespace softtune::codec {
+
+nlohmann::json number_or_null(double v);
+nlohmann::json number_or_null(const std::optional<double>& v);
+
+/// [{code, message, value?, limit?}]
+nlohmann::json warnings_json(const Warnings& warnings);
+
+/// ["validate", "designer_mapping", ...]
+nlohmann::json stages_json(const StageList& stages);
+
+}  // namespace softtune::codec

@@ -1,0 +1,24 @@
+#pragma once
+// The tune contract (shared by `softtune tune` and POST /api/v1/tune): JSON <-> TuneRequest/TuneResult.
+
+#include <nlohmann/json.hpp>
+
+#include "codec/json_reader.h"
+#include "softtune/tune.h"
+
+namespace softtune::codec {
+
+/// Decodes and validates a tune request; throws Problem (422) naming the field and the rule.
+TuneRequest decode_tune_request(const nlohmann::json& doc);
+
+/// Reads the tune fields from an object that may also hold other fields (scenes, accuracy requests);
+/// the caller calls finish(). Validates.
+TuneRequest read_tune_fields(ObjectReader& r);
+
+/// The response object (field list in README.md, "tune").
+nlohmann::json encode_tune_result(const TuneRequest& request, const TuneResult& result);
+
+/// decode + tune + encode.
+nlohmann::json run_tune(const nlohmann::json& doc);
+
+}  // namespace softtune::codec
