@@ -4,6 +4,18 @@
 #include <numbers>
 
 namespace softtune {
+namespace {
+
+// |z| without std::abs(complex), which goes through hypot; falls back to it only on overflow.
+double modulus(std::complex<double> z) {
+  const double r = std::sqrt(z.real() * z.real() + z.imag() * z.imag());
+  return std::isfinite(r) ? r : std::hypot(z.real(), z.imag());
+}
+
+// ln z = ln|z| + i arg z; glibc's precise clog sorts terms (qsort) and costs ~10x this.
+std::complex<double> log_of(std::complex<double> z) { return {std::log(modulus(z)), std::atan2(z.imag(), z.real())}; }
+
+}  // namespace
 
 Eigen::Matrix2d step_matrix(Method m, const StepModel& model) {
   const State col_x = step(m, {1.0, 0.0}, model);
@@ -34,11 +46,11 @@ void eigenvalues_2x2(const Eigen::Matrix2d& a, std::complex<double>& z1, std::co
 
 bool achieved_from_poles(std::complex<double> z1, std::complex<double> z2, double h, double& frequency_hz,
                          double& damping_ratio) {
-  const double r1 = std::abs(z1), r2 = std::abs(z2);
+  const double r1 = modulus(z1), r2 = modulus(z2);
   if (!(r1 > 0.0) || !(r2 > 0.0) || !std::isfinite(r1) || !std::isfinite(r2)) return false;
   std::complex<double> s;
   if (z1.imag() != 0.0) {
-    s = std::log(z1) / h;
+    s = log_of(z1) / h;
   } else if (z1.real() > 0.0 && z2.real() > 0.0) {
     const double s1 = std::log(z1.real()) / h, s2 = std::log(z2.real()) / h;
     const double product = s1 * s2;
@@ -50,7 +62,7 @@ bool achieved_from_poles(std::complex<double> z1, std::complex<double> z2, doubl
   } else {
     s = {std::log(std::sqrt(r1 * r2)) / h, std::numbers::pi / h};
   }
-  const double omega = std::abs(s);
+  const double omega = modulus(s);
   if (!(omega > 0.0) || !std::isfinite(omega)) return false;
   frequency_hz = omega / (2.0 * std::numbers::pi);
   damping_ratio = -s.real() / omega;
@@ -82,7 +94,7 @@ DiscreteAnalysis analyze(Method m, const StepModel& model, double omega, double 
   DiscreteAnalysis out;
   out.step_matrix = step_matrix(m, model);
   eigenvalues_2x2(out.step_matrix, out.z1, out.z2);
-  out.spectral_radius = std::max(std::abs(out.z1), std::abs(out.z2));
+  out.spectral_radius = std::max(modulus(out.z1), modulus(out.z2));
   out.verdict = classify_spectral_radius(out.spectral_radius);
   out.max_stable_h = max_stable_step(m, omega, zeta);
   if (omega > 0.0) out.steps_per_period = 2.0 * std::numbers::pi / (omega * model.h);

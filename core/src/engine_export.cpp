@@ -43,7 +43,9 @@ EngineExport export_engines(const EngineExportInput& in, Warnings& warnings) {
     if (std::abs(error) > 0.01) warnings.push_back({WarningCode::box2d_reduced_mass_error, error, 0.0});
   }
 
-  // Box2D v3 b2MakeSoft(hertz, zeta, h) in solver.h; joints clamp to jointHertz <= 0.25 / h (substep).
+  // Box2D v3 springs take (hertz, dampingRatio) into b2MakeSoft(hertz, zeta, h) (solver.h). Its joints
+  // soften their rigid rows at min(constraintHertz, 0.25 / h) (joint.c b2PrepareJoint: "Clamp joint hertz
+  // based on the time step to reduce jitter"): a spring above that is stiffer than the joint itself.
   out.box2d_v3.max_hertz = 0.25 / in.h;
   if (modal && 2.0 * modal->zeta + in.h * modal->omega > 0.0) {
     const double hertz = frequency_from_angular(modal->omega);
@@ -66,17 +68,17 @@ EngineExport export_engines(const EngineExportInput& in, Warnings& warnings) {
     out.jolt.damping_ratio = modal->zeta;
   }
 
-  // MuJoCo solref (engine_core_constraint.c mj_makeImpedance): standard form (timeconst, dampratio) gives
-  // b = 2 / (dmax timeconst), k = 1 / (dmax^2 timeconst^2 dampratio^2) per unit mass in constraint space,
-  // i.e. timeconst = 1 / (zeta omega). timeconst is clamped to >= 2h; direct form (-k/m, -c/m) is not.
+  // MuJoCo solref, standard form (timeconst, dampratio): stiffness = m / (timeconst^2 dampratio^2),
+  // damping = 2 m / timeconst (mujoco user/user_model.cc, "same as solref computation"), so
+  // timeconst = 1 / (zeta omega), dampratio = zeta. MuJoCo raises timeconst to at least 2h; below that, or
+  // without positive damping, the direct form (-stiffness, -damping) per unit mass is exported instead.
   const double stiffness_per_mass = s.stiffness / m, damping_per_mass = s.damping / m;
-  const double timeconst = in.damping_ratio > 0.0 ? 1.0 / (in.damping_ratio * in.omega) : INFINITY;
-  if (in.omega > 0.0 && std::isfinite(timeconst) && timeconst >= 2.0 * in.h && s.damping >= 0.0) {
-    out.mujoco = {false, timeconst, in.damping_ratio};
+  if (modal && modal->zeta > 0.0 && 1.0 / (modal->zeta * modal->omega) >= 2.0 * in.h) {
+    out.mujoco = {false, 1.0 / (modal->zeta * modal->omega), modal->zeta};
   } else {
     out.mujoco = {true, -stiffness_per_mass, -damping_per_mass};
-    if (std::isfinite(timeconst) && timeconst < 2.0 * in.h) {
-      warnings.push_back({WarningCode::mujoco_direct_solref, timeconst, 2.0 * in.h});
+    if (modal && modal->zeta > 0.0) {
+      warnings.push_back({WarningCode::mujoco_direct_solref, 1.0 / (modal->zeta * modal->omega), 2.0 * in.h});
     }
   }
 

@@ -56,8 +56,8 @@ std::string warning_message(const Warning& w) {
     case WarningCode::axis_normalized:
       return format("axis had length %.6g and was normalized", w.value);
     case WarningCode::box2d_v3_clamped:
-      return format("Box2D v3 clamps joint stiffness to %.6g Hz (a quarter of the step rate); %.6g Hz "
-                    "will be softer there", w.limit, w.value);
+      return format("%.6g Hz is above Box2D v3's joint clamp of %.6g Hz (a quarter of the step rate): the "
+                    "joint's own rigid rows are softer than this spring there", w.value, w.limit);
     case WarningCode::mujoco_direct_solref:
       return format("timeconst %.6g s is below MuJoCo's 2h = %.6g s safety limit: exported the direct "
                     "(-stiffness, -damping) solref instead", w.value, w.limit);

@@ -9,7 +9,8 @@ namespace softtune::codec {
 nlohmann::json parse_json(std::string_view text) {
   // Keys seen in each open object, to refuse duplicates (nlohmann keeps the last one silently).
   std::vector<std::set<std::string>> open_objects;
-  auto callback = [&open_objects](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+  std::string last_key;  // names the field when a value fails to parse (e.g. a number overflowing 1e308)
+  auto callback = [&open_objects, &last_key](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     using E = nlohmann::json::parse_event_t;
     if (depth > kMaxJsonDepth) {
       throw malformed_json("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
@@ -18,6 +19,7 @@ nlohmann::json parse_json(std::string_view text) {
     if (event == E::object_end && !open_objects.empty()) open_objects.pop_back();
     if (event == E::key && !open_objects.empty()) {
       const std::string& key = parsed.get_ref<const std::string&>();
+      last_key = key;
       if (!open_objects.back().insert(key).second) {
         throw Problem(400, "Malformed JSON", key, "duplicated key \"" + key + "\"");
       }
@@ -26,6 +28,8 @@ nlohmann::json parse_json(std::string_view text) {
   };
   try {
     return nlohmann::json::parse(text.begin(), text.end(), callback);
+  } catch (const nlohmann::json::out_of_range& e) {
+    throw Problem(400, "Malformed JSON", last_key, std::string("number out of range (must be finite): ") + e.what());
   } catch (const nlohmann::json::exception& e) {
     throw malformed_json(e.what());
   }

@@ -27,8 +27,12 @@ struct ExactSpring {
   bool finite = true;
 };
 
+/// Exact mode clamps to omega_d h = pi (1 - kNyquistMargin). Exactly at Nyquist an undamped pole pair
+/// meets at z = -1 as a double root, and the motion grows linearly; just below it stays bounded.
+inline constexpr double kNyquistMargin = 1e-6;
+
 /// Highest natural angular frequency (rad/s) whose poles a step h can represent for a damping ratio:
-/// omega_d h = pi, so omega = pi / (h sqrt(1 - zeta^2)); unbounded (infinity) for zeta >= 1.
+/// omega_d h = pi (1 - kNyquistMargin), so omega = that / (h sqrt(1 - zeta^2)); infinity for zeta >= 1.
 double exact_max_omega(double damping_ratio, double h);
 
 /// k', c' and the softness for mass m (kg), omega (rad/s), zeta, time step h (s).

@@ -16,7 +16,7 @@ enum class WarningCode {
   few_steps_per_period,    ///< fewer than 4 steps per period (the talk's rule of thumb). value: steps
   frequency_error,         ///< standard mode misses the asked frequency by more than 5 %. value: relative
   axis_normalized,         ///< constraint axis was not unit length. value: its length
-  box2d_v3_clamped,        ///< Box2D v3 clamps joint hertz to 0.25/h. value: Hz asked, limit: Hz clamp
+  box2d_v3_clamped,        ///< above Box2D v3's 0.25/h joint clamp. value: Hz asked, limit: Hz clamp
   mujoco_direct_solref,    ///< timeconst < 2h: MuJoCo would clamp it; the direct form is exported
   box2d_reduced_mass_error,  ///< b2LinearStiffness's reduced mass misses the frequency. value: relative
   engine_note,             ///< an engine cannot express this tuning exactly. text says which

@@ -1,0 +1,59 @@
+#include "softtune/analytic.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace softtune;
+
+namespace {
+// Residual of x'' + 2 zeta omega x' + omega^2 x = 0 by central differences of the returned position.
+double ode_residual(State s0, double omega, double zeta, double t) {
+  const double d = 1e-4;
+  const double xm = analytic_state(s0, omega, zeta, t - d).x, x0 = analytic_state(s0, omega, zeta, t).x,
+               xp = analytic_state(s0, omega, zeta, t + d).x;
+  const double acc = (xp - 2 * x0 + xm) / (d * d), vel = (xp - xm) / (2 * d);
+  return acc + 2 * zeta * omega * vel + omega * omega * x0;
+}
+}  // namespace
+
+TEST(Analytic, StartsAtTheInitialState) {
+  for (double zeta : {0.0, 0.4, 1.0, 2.5}) {
+    const State s = analytic_state({0.8, -1.5}, 7.0, zeta, 0.0);
+    EXPECT_NEAR(s.x, 0.8, 1e-14);
+    EXPECT_NEAR(s.v, -1.5, 1e-13);
+  }
+}
+
+TEST(Analytic, SolvesTheOscillatorInEveryRegime) {
+  for (double zeta : {0.0, 0.3, 1.0, 1.7, 20.0}) {
+    for (double t : {0.05, 0.3, 1.1}) {
+      const double omega = 6.0;
+      EXPECT_NEAR(ode_residual({1.0, 0.5}, omega, zeta, t), 0.0, 2e-4 * omega * omega) << zeta << " " << t;
+      // The velocity is the derivative of the position.
+      const double d = 1e-6;
+      const double fd = (analytic_state({1.0, 0.5}, omega, zeta, t + d).x - analytic_state({1.0, 0.5}, omega, zeta, t - d).x) / (2 * d);
+      EXPECT_NEAR(analytic_state({1.0, 0.5}, omega, zeta, t).v, fd, 1e-6) << zeta << " " << t;
+    }
+  }
+}
+
+TEST(Analytic, UndampedIsACosine) {
+  const double omega = 3.0;
+  for (double t = 0; t < 5; t += 0.37) EXPECT_NEAR(analytic_state({2.0, 0.0}, omega, 0.0, t).x, 2.0 * std::cos(omega * t), 1e-13);
+}
+
+TEST(Analytic, RegimesJoinContinuouslyAtCriticalDamping) {
+  const double omega = 4.0, t = 0.6;
+  const double below = analytic_state({1.0, 0.0}, omega, 1.0 - 1e-7, t).x;
+  const double at = analytic_state({1.0, 0.0}, omega, 1.0, t).x;
+  const double above = analytic_state({1.0, 0.0}, omega, 1.0 + 1e-7, t).x;
+  EXPECT_NEAR(below, at, 1e-6);
+  EXPECT_NEAR(above, at, 1e-6);
+}
+
+TEST(Analytic, NoSpringIsFreeFlight) {
+  const State s = analytic_state({1.0, 2.0}, 0.0, 0.0, 3.0);
+  EXPECT_DOUBLE_EQ(s.x, 7.0);
+  EXPECT_DOUBLE_EQ(s.v, 2.0);
+}
