@@ -13,7 +13,7 @@ packages=(
   libbox2d-dev                       # core/scene: Box2D 2.4 scenes
   libosmesa6-dev libpng-dev          # render: off-screen frames, PNG
   libcpp-httplib-dev                 # server: HTTP
-  nodejs npm chromium                # web page, browser tests
+  chromium                           # browser tests
   wrk                                # bench: HTTP load
 )
 
@@ -21,6 +21,10 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# Node.js and npm (the web page's packages, browser tests): the base image may ship them outside Debian's
+# packages (nodesource bundles npm), where Debian's npm package conflicts; install Debian's only if absent.
+command -v node >/dev/null 2>&1 || missing+=(nodejs)
+command -v npm >/dev/null 2>&1 || missing+=(npm)
 
 if ((${#missing[@]})); then
   if [[ $(id -u) -eq 0 ]]; then
