@@ -1,6 +1,7 @@
 #include "codec/accuracy_codec.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -226,6 +227,12 @@ std::string accuracy_csv(const json& encoded) {
     if (v.is_null()) return "";
     if (v.is_string()) return v.get<std::string>();
     if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+    if (v.is_number_float()) {
+      // Shortest text that reads back as the same double (60.0 -> "60").
+      char buffer[32];
+      const auto end = std::to_chars(buffer, buffer + sizeof buffer, v.get<double>()).ptr;
+      return std::string(buffer, end);
+    }
     return v.dump();
   };
   std::vector<std::vector<std::string>> cells;
