@@ -50,7 +50,7 @@ struct AccuracySettings {
   int timing_repeats = 5;      ///< timed batches per row; the median is reported
   /// Steps per timed batch at least this many (short runs repeated) so a batch is well above the
   /// clock's resolution.
-  int min_steps_per_batch = 4096;
+  int min_steps_per_batch = 1024;
   SecondsClock clock = steady_clock_seconds;
   std::optional<EngineRunner> engine;  ///< an extra row per step rate when set
 };
