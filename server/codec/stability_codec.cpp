@@ -235,7 +235,7 @@ std::string stability_svg(const json& encoded) {
   for (double zeta : {0.0, 0.1, 1.0, 10.0}) plots.push_back(stability_map_plot(zeta));
   if (encoded.contains("chain")) {
     using plot::Scale;
-    plot::Plot p{"Sequential impulses, light link + heavy weight: highest stable f h", plot::make_axis("mass ratio m2 / m1", "", Scale::log),
+    plot::Plot p{"Sequential impulses, light link + heavy weight: highest stable f h (scan ends at 2)", plot::make_axis("mass ratio m2 / m1", "", Scale::log),
                  plot::make_axis("highest stable f h", "", Scale::log), {}, {}};
     for (const json& l : encoded.at("chain").at("limits")) {
       const std::string name = std::to_string(l.at("iterations").get<int>()) + " iterations" +
