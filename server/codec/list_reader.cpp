@@ -24,38 +24,41 @@ const nlohmann::json* list_at(ObjectReader& r, std::string_view key, std::size_t
   return v;
 }
 
-}  // namespace
-
-std::optional<std::vector<double>> read_number_list(ObjectReader& r, std::string_view key, std::size_t max_entries,
-                                                    double lo, double hi, const char* unit) {
-  const std::string rule = list_rule(max_entries, lo, hi, unit, false);
+// Reads every entry with `read` (which returns false when the entry breaks the rule).
+template <typename T, typename Read>
+std::optional<std::vector<T>> read_list(ObjectReader& r, std::string_view key, std::size_t max_entries,
+                                        const std::string& rule, Read read) {
   const nlohmann::json* v = list_at(r, key, max_entries, rule);
   if (!v) return std::nullopt;
-  std::vector<double> out;
+  std::vector<T> out;
   for (std::size_t i = 0; i < v->size(); ++i) {
-    const nlohmann::json& e = (*v)[i];
-    const std::string path = r.field(key) + "[" + std::to_string(i) + "]";
-    if (!e.is_number()) throw invalid_field(path, rule);
-    const double d = e.get<double>();
-    if (!std::isfinite(d) || d < lo || d > hi) throw invalid_field(path, rule);
-    out.push_back(d);
+    T value{};
+    if (!read((*v)[i], value)) throw invalid_field(r.field(key) + "[" + std::to_string(i) + "]", rule);
+    out.push_back(value);
   }
   return out;
 }
 
+}  // namespace
+
+std::optional<std::vector<double>> read_number_list(ObjectReader& r, std::string_view key, std::size_t max_entries,
+                                                    double lo, double hi, const char* unit) {
+  return read_list<double>(r, key, max_entries, list_rule(max_entries, lo, hi, unit, false),
+                           [&](const nlohmann::json& e, double& out) {
+                             if (!e.is_number()) return false;
+                             out = e.get<double>();
+                             return std::isfinite(out) && out >= lo && out <= hi;
+                           });
+}
+
 std::optional<std::vector<int>> read_integer_list(ObjectReader& r, std::string_view key, std::size_t max_entries,
                                                   int lo, int hi) {
-  const std::string rule = list_rule(max_entries, lo, hi, "", true);
-  const nlohmann::json* v = list_at(r, key, max_entries, rule);
-  if (!v) return std::nullopt;
-  std::vector<int> out;
-  for (std::size_t i = 0; i < v->size(); ++i) {
-    const nlohmann::json& e = (*v)[i];
-    const std::string path = r.field(key) + "[" + std::to_string(i) + "]";
-    if (!e.is_number_integer() || e.get<long long>() < lo || e.get<long long>() > hi) throw invalid_field(path, rule);
-    out.push_back(static_cast<int>(e.get<long long>()));
-  }
-  return out;
+  return read_list<int>(r, key, max_entries, list_rule(max_entries, lo, hi, "", true),
+                        [&](const nlohmann::json& e, int& out) {
+                          if (!e.is_number_integer() || e.get<long long>() < lo || e.get<long long>() > hi) return false;
+                          out = static_cast<int>(e.get<long long>());
+                          return true;
+                        });
 }
 
 }  // namespace softtune::codec

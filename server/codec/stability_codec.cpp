@@ -105,6 +105,46 @@ void read_chain(ObjectReader& parent, StabilityRequest& q) {
   r.finish();
 }
 
+json chain_limit_json(const ChainLimit& l) {
+  return {{"mass_ratio", number_or_null(l.mass_ratio)},
+          {"iterations", l.iterations},
+          {"warm_start", l.warm_start},
+          {"highest_stable_frequency_ratio", number_or_null(l.highest_stable_frequency_ratio)},
+          {"highest_stable_frequency_hz", number_or_null(l.highest_stable_frequency_hz)},
+          {"stable_over_whole_scan", l.stable_over_whole_scan}};
+}
+
+json chain_case_json(const ChainCase& c) {
+  return {{"mass_ratio", number_or_null(c.mass_ratio)},
+          {"iterations", c.iterations},
+          {"warm_start", c.warm_start},
+          {"frequency_ratio", number_or_null(c.frequency_ratio)},
+          {"damping_ratio", number_or_null(c.damping_ratio)},
+          {"spectral_radius", number_or_null(c.spectral_radius)},
+          {"predicted", verdict_name(c.predicted)},
+          {"predicted_stable", c.predicted != Verdict::unstable},
+          {"observed_spectral_radius", number_or_null(c.observed_spectral_radius)},
+          {"observed", verdict_name(c.observed)},
+          {"observed_stable", c.observed != Verdict::unstable}};
+}
+
+json chain_json(const StabilityRequest& q, const ChainSweepResult& chain) {
+  json limits = json::array();
+  for (const ChainLimit& l : chain.limits) limits.push_back(chain_limit_json(l));
+  json out = {{"damping_ratio", number_or_null(q.chain.damping_ratio)},
+              {"h", number_or_null(q.chain.h)},
+              {"scanned_frequency_ratios", q.chain.frequency_ratios},
+              {"cases", chain.cases.size()},
+              {"mismatches", chain.mismatches},
+              {"limits", std::move(limits)}};
+  if (q.include_cases) {
+    json cases = json::array();
+    for (const ChainCase& c : chain.cases) cases.push_back(chain_case_json(c));
+    out["case_list"] = std::move(cases);
+  }
+  return out;
+}
+
 }  // namespace
 
 StabilityRequest decode_stability_request(const json& doc) {
@@ -169,39 +209,7 @@ json run_stability(const StabilityRequest& q) {
   if (q.run_chain) {
     stages.add(Stage::sequential_impulse_chain);
     const ChainSweepResult chain = run_chain_sweep(q.chain);
-    json limits_json = json::array();
-    for (const ChainLimit& l : chain.limits) {
-      limits_json.push_back({{"mass_ratio", number_or_null(l.mass_ratio)},
-                             {"iterations", l.iterations},
-                             {"warm_start", l.warm_start},
-                             {"highest_stable_frequency_ratio", number_or_null(l.highest_stable_frequency_ratio)},
-                             {"highest_stable_frequency_hz", number_or_null(l.highest_stable_frequency_hz)},
-                             {"stable_over_whole_scan", l.stable_over_whole_scan}});
-    }
-    json chain_json = {{"damping_ratio", number_or_null(q.chain.damping_ratio)},
-                       {"h", number_or_null(q.chain.h)},
-                       {"scanned_frequency_ratios", q.chain.frequency_ratios},
-                       {"cases", chain.cases.size()},
-                       {"mismatches", chain.mismatches},
-                       {"limits", std::move(limits_json)}};
-    if (q.include_cases) {
-      json cases = json::array();
-      for (const ChainCase& c : chain.cases) {
-        cases.push_back({{"mass_ratio", number_or_null(c.mass_ratio)},
-                         {"iterations", c.iterations},
-                         {"warm_start", c.warm_start},
-                         {"frequency_ratio", number_or_null(c.frequency_ratio)},
-                         {"damping_ratio", number_or_null(c.damping_ratio)},
-                         {"spectral_radius", number_or_null(c.spectral_radius)},
-                         {"predicted", verdict_name(c.predicted)},
-                         {"predicted_stable", c.predicted != Verdict::unstable},
-                         {"observed_spectral_radius", number_or_null(c.observed_spectral_radius)},
-                         {"observed", verdict_name(c.observed)},
-                         {"observed_stable", c.observed != Verdict::unstable}});
-      }
-      chain_json["case_list"] = std::move(cases);
-    }
-    out["chain"] = std::move(chain_json);
+    out["chain"] = chain_json(q, chain);
     out["summary"]["passed"] = out["summary"]["passed"].get<bool>() && chain.mismatches == 0;
   }
   out["stages"] = stages_json(stages);
