@@ -79,10 +79,13 @@ AccuracyRequest decode_accuracy_request(const json& doc) {
     q.box2d = b->get<bool>();
   }
 
-  // Duration: at least kMinPeriods periods of the asked frequency; the default is exactly that.
+  // Duration: at least kMinPeriods periods of the asked frequency. The default is that, or
+  // kMinFramesAtLowestRate frames of the lowest step rate when longer.
   const double f = requested_frequency_hz(q.tune);
   const double min_duration = f > 0.0 ? limits::kMinPeriods / f : 0.0;
-  s.duration_s = f > 0.0 ? min_duration : limits::kDefaultDurationNoSpringS;
+  const double min_rate = *std::min_element(s.step_rates_hz.begin(), s.step_rates_hz.end());
+  s.duration_s = f > 0.0 ? std::max(min_duration, limits::kMinFramesAtLowestRate / min_rate)
+                         : limits::kDefaultDurationNoSpringS;
   if (auto d = r.number("duration_s")) {
     if (!(*d > 0.0) || *d < min_duration * (1.0 - 1e-12)) {
       throw invalid_field("duration_s", format("must be at least %g periods of %g Hz (%g s)", limits::kMinPeriods, f,
@@ -94,10 +97,15 @@ AccuracyRequest decode_accuracy_request(const json& doc) {
   const double max_substeps = *std::max_element(s.soft_substeps.begin(), s.soft_substeps.end());
   const double steps = max_rate * max_substeps * s.duration_s;
   if (steps > limits::kMaxAccuracyStepsPerRow) {
-    throw invalid_field(r.has("duration_s") ? "duration_s" : "frequency_hz",
-                        format("the longest row would take %g steps (fps * substeps * duration_s); the limit is %g: "
-                               "shorten duration_s, ask a higher frequency or lower step_rates / soft_substeps",
-                               steps, limits::kMaxAccuracyStepsPerRow));
+    // Blame what the caller chose: the duration, the request's own fps when it is the top rate, the rates.
+    const char* field = r.has("duration_s") ? "duration_s"
+                        : max_rate == q.tune.fps ? "fps"
+                        : rates ? "step_rates"
+                                : "frequency_hz";
+    throw invalid_field(field, format("the longest row would take %g steps (fps * substeps * duration_s); the limit is "
+                                      "%g: shorten duration_s, ask a higher frequency or lower the step rates or "
+                                      "soft_substeps",
+                                      steps, limits::kMaxAccuracyStepsPerRow));
   }
   r.finish();
   return q;

@@ -110,6 +110,10 @@ TEST(AccuracyCodec, BadFieldsNameTheField) {
   json slow = ten_hz_free();
   slow["frequency_hz"] = 1e-4;  // 3 periods = 30000 s: too many steps
   expect_problem(slow, "frequency_hz");
+  json fast = ten_hz_free();
+  fast["frequency_hz"] = 0.5;
+  fast["fps"] = 100000.0;  // the request's own rate is the top one
+  expect_problem(fast, "fps");
 }
 
 TEST(AccuracyCodec, NoSpringRunsOneSecond) {
@@ -144,6 +148,21 @@ TEST(AccuracyCodec, SvgHasTheFourPlots) {
   }
   EXPECT_EQ(svg.find("nan"), std::string::npos);
   EXPECT_EQ(svg.find("inf"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace softtune::codec
+
+namespace softtune::codec {
+namespace {
+
+// 45 Hz at 30 fps: 3 periods would be 2 frames; the default covers 8 frames of the lowest rate.
+TEST(AccuracyCodec, FastSpringAtLowRateGetsEnoughFrames) {
+  json request = {{"frequency_hz", 45.0}, {"oscillation", "free"}, {"effective_mass", 1.0}, {"fps", 60.0}};
+  const AccuracyRequest q = decode_accuracy_request(request);
+  EXPECT_NEAR(q.settings.duration_s, 8.0 / 30.0, 1e-12);
+  request["duration_s"] = 0.1;  // 4.5 periods: allowed when asked for
+  EXPECT_NEAR(decode_accuracy_request(request).settings.duration_s, 0.1, 1e-12);
 }
 
 }  // namespace

@@ -21,6 +21,9 @@ inline constexpr int kMaxTimingRepeats = 51;
 inline constexpr double kMinPeriods = 3.0;              ///< duration_s covers at least this many periods
 inline constexpr double kMaxAccuracyStepsPerRow = 2e6;  ///< fps * substeps * duration_s
 inline constexpr double kDefaultDurationNoSpringS = 1.0;  ///< s, duration when the frequency is 0
+/// The default duration also covers this many frames of the lowest step rate, so a fast spring at a low
+/// rate is still sampled enough to score (and to fit its poles).
+inline constexpr double kMinFramesAtLowestRate = 8.0;
 }  // namespace softtune::limits
 
 namespace softtune {
