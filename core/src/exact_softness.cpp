@@ -8,7 +8,7 @@ namespace softtune {
 
 double exact_max_omega(double damping_ratio, double h) {
   if (damping_ratio >= 1.0) return std::numeric_limits<double>::infinity();
-  return std::numbers::pi * (1.0 - kNyquistMargin) / (h * std::sqrt(1.0 - damping_ratio * damping_ratio));
+  return (1.0 - kNyquistMargin) * std::numbers::pi / (h * std::sqrt(1.0 - damping_ratio * damping_ratio));
 }
 
 namespace {

@@ -15,6 +15,11 @@ std::string_view stage_name(Stage s) {
     case Stage::exact_softness: return "exact_softness";
     case Stage::discrete_analysis: return "discrete_analysis";
     case Stage::engine_export: return "engine_export";
+    case Stage::accuracy_runs: return "accuracy_runs";
+    case Stage::box2d_distance_joint: return "box2d_distance_joint";
+    case Stage::recommendation: return "recommendation";
+    case Stage::stability_sweep: return "stability_sweep";
+    case Stage::sequential_impulse_chain: return "sequential_impulse_chain";
   }
   return "unknown";
 }

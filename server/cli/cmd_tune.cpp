@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/cli_io.h"
+#include "cli/tune_flags.h"
 #include "codec/problem.h"
 #include "codec/tune_codec.h"
 
@@ -12,40 +13,20 @@ constexpr const char* kHelp = R"(softtune tune: turn a designer's request into s
 
   softtune tune --request FILE      read the request JSON from FILE (- for stdin)
   softtune tune [flags]             or build it from flags:
-    --frames N          response_frames: one oscillation period lasts N frames
-    --basis-fps B       basis_fps for --frames (default 60)
-    --frequency F       frequency_hz, instead of --frames
-    --oscillation L     free | some | none
-    --damping-ratio Z   damping_ratio, instead of --oscillation
-    --mass M            effective_mass in kg
-    --fps F             step rate (default 60)
-    --substeps N        substeps per frame (default 1)
-    --mode M            standard | exact (default standard)
-
+)";
+constexpr const char* kHelpTail = R"(
 Prints one JSON object. Bad input: exit code 2 and a problem JSON on stderr naming the field.
 )";
-
-// Flag -> request field; numbers become JSON numbers, the rest strings.
-struct FlagField {
-  const char* flag;
-  const char* field;
-  bool numeric;
-};
-constexpr FlagField kFlagFields[] = {
-    {"frames", "response_frames", true}, {"basis-fps", "basis_fps", true}, {"frequency", "frequency_hz", true},
-    {"oscillation", "oscillation", false}, {"damping-ratio", "damping_ratio", true}, {"mass", "effective_mass", true},
-    {"fps", "fps", true}, {"substeps", "substeps", true}, {"mode", "mode", false},
-};
 
 }  // namespace
 
 int run_tune(const Args& args) {
   return guarded([&] {
-    std::vector<std::string> with_value = {"request"};
-    for (const FlagField& f : kFlagFields) with_value.emplace_back(f.flag);
+    std::vector<std::string> with_value = tune_flag_names();
+    with_value.emplace_back("request");
     const Flags flags = parse_flags(args, with_value, {"help"});
     if (flags.has("help")) {
-      std::cout << kHelp;
+      std::cout << kHelp << kTuneFlagsHelp << kHelpTail;
       return kExitOk;
     }
     nlohmann::json request;
@@ -53,15 +34,7 @@ int run_tune(const Args& args) {
       if (flags.values.size() > 1) throw codec::invalid_field("--request", "cannot be combined with other flags");
       request = read_request_file(*file);
     } else {
-      request = nlohmann::json::object();
-      for (const FlagField& f : kFlagFields) {
-        if (!flags.has(f.flag)) continue;
-        if (f.numeric) {
-          request[f.field] = flag_number(flags, f.flag);
-        } else {
-          request[f.field] = *flags.get(f.flag);
-        }
-      }
+      request = tune_fields_from_flags(flags);
     }
     print_json(codec::run_tune(request));
     return kExitOk;

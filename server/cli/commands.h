@@ -10,5 +10,7 @@ using Args = std::vector<std::string>;
 
 int run_tune(const Args& args);
 int run_serve(const Args& args);
+int run_accuracy(const Args& args);
+int run_stability(const Args& args);
 
 }  // namespace softtune::cli

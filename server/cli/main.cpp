@@ -15,6 +15,8 @@ struct Command {
 constexpr Command kCommands[] = {
     {"tune", "designer request -> k, c, gamma, beta, ERP/CFM, engine export, stability", softtune::cli::run_tune},
     {"serve", "the REST API and the page on http://127.0.0.1:8080/", softtune::cli::run_serve},
+    {"accuracy", "work-precision report: error against CPU time per method, and a recommendation", softtune::cli::run_accuracy},
+    {"stability", "extreme-case sweep: predicted against observed stability, mass-ratio chain", softtune::cli::run_stability},
 };
 
 int usage(std::ostream& out, int code) {

@@ -11,7 +11,10 @@
 // Under-damped: z = e exp(+-i theta), e = exp(-zeta omega h), theta = omega_d h = omega sqrt(1 - zeta^2) h,
 //   (1 - z1)(1 - z2) = (1 - e)^2 + 2 e (1 - cos theta),  S - 2P = 2 e ((1 - e) - (1 - cos theta)).
 // Over-damped: z1,2 = exp(s1,2 h), s1,2 = -omega (zeta -+ sqrt(zeta^2 - 1)), both real.
-// Poles can be matched only below Nyquist, omega_d h <= pi; above it omega is clamped.
+// Poles can be matched only below Nyquist, omega_d h < pi (SPEC.md); above it omega is clamped to
+// omega_d h = (1 - kNyquistMargin) pi. At omega_d h = pi itself the two poles merge into a double pole
+// z = -exp(-zeta omega h); for zeta = 0 that is a Jordan block at -1 and the motion grows linearly
+// without bound (found by the stability sweep, stability_sweep.h).
 
 #include "softtune/softness.h"
 
@@ -27,12 +30,12 @@ struct ExactSpring {
   bool finite = true;
 };
 
-/// Exact mode clamps to omega_d h = pi (1 - kNyquistMargin). Exactly at Nyquist an undamped pole pair
-/// meets at z = -1 as a double root, and the motion grows linearly; just below it stays bounded.
-inline constexpr double kNyquistMargin = 1e-6;
+/// Fraction of Nyquist kept free by the clamp: the clamped poles stay a distinct pair.
+inline constexpr double kNyquistMargin = 0.01;
 
-/// Highest natural angular frequency (rad/s) whose poles a step h can represent for a damping ratio:
-/// omega_d h = pi (1 - kNyquistMargin), so omega = that / (h sqrt(1 - zeta^2)); infinity for zeta >= 1.
+/// Highest natural angular frequency (rad/s) whose poles a step h represents for a damping ratio:
+/// omega_d h = (1 - kNyquistMargin) pi, so omega = (1 - kNyquistMargin) pi / (h sqrt(1 - zeta^2));
+/// unbounded (infinity) for zeta >= 1.
 double exact_max_omega(double damping_ratio, double h);
 
 /// k', c' and the softness for mass m (kg), omega (rad/s), zeta, time step h (s).

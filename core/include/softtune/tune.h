@@ -38,6 +38,7 @@ struct TuneRequest {
 enum class Stage : std::uint8_t {
   validate, designer_mapping, effective_mass, softness, exact_softness, discrete_analysis, engine_export,
   // Later stages (scenes, rendering) extend this list.
+  accuracy_runs, box2d_distance_joint, recommendation, stability_sweep, sequential_impulse_chain,
 };
 std::string_view stage_name(Stage s);
 

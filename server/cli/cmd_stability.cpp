@@ -1,0 +1,51 @@
+// `softtune stability`: the extreme-case sweep (contract: README.md, "Accuracy and stability").
+#include <iostream>
+
+#include "cli/cli_io.h"
+#include "codec/problem.h"
+#include "codec/stability_codec.h"
+
+namespace softtune::cli {
+namespace {
+
+constexpr const char* kHelp = R"(softtune stability: predicted (step matrix) against observed (simulation) stability.
+
+  softtune stability                 the default sweep (>= 10,000 cases) and the sequential-impulse chain
+  softtune stability --request FILE  a custom sweep (- for stdin): methods, frequency_ratios, stiffnesses,
+                                     damping_ratios, masses, steps, max_stiffness, observe_steps,
+                                     include_cases, chain
+    --summary           counts and chain limits only (no per-case list)
+    --format F          json (default) | svg (stability maps and the chain's limits)
+
+Exit code 0 when every observation matches its prediction, 1 otherwise; bad input: 2.
+)";
+
+}  // namespace
+
+int run_stability(const Args& args) {
+  return guarded([&] {
+    const Flags flags = parse_flags(args, {"request", "format"}, {"help", "summary"});
+    if (flags.has("help")) {
+      std::cout << kHelp;
+      return kExitOk;
+    }
+    const std::string format = flags.get("format").value_or("json");
+    if (format != "json" && format != "svg") throw codec::invalid_field("--format", "must be json or svg");
+    nlohmann::json doc;
+    if (auto file = flags.get("request")) doc = read_request_file(*file);
+    codec::StabilityRequest q = codec::decode_stability_request(doc);
+    if (flags.has("summary") || format == "svg") q.include_cases = false;
+    const nlohmann::json out = codec::run_stability(q);
+    if (format == "svg") {
+      std::cout << codec::stability_svg(out);
+    } else if (flags.has("summary")) {
+      print_json({{"summary", out.at("summary")}, {"chain", out.contains("chain") ? out.at("chain") : nlohmann::json()},
+                  {"stages", out.at("stages")}});
+    } else {
+      print_json(out);
+    }
+    return out.at("summary").at("passed").get<bool>() ? kExitOk : kExitFailed;
+  });
+}
+
+}  // namespace softtune::cli

@@ -1,0 +1,265 @@
+#include "codec/stability_codec.h"
+
+#include <cstdio>
+
+#include "codec/json_writer.h"
+#include "codec/list_reader.h"
+#include "codec/problem.h"
+#include "plot/svg_writer.h"
+#include "softtune/validation.h"
+
+namespace softtune::codec {
+
+using nlohmann::json;
+
+namespace {
+
+// Limits of a custom sweep (README "Accuracy and stability").
+constexpr std::size_t kMaxGridEntries = 32;
+constexpr std::size_t kMaxCases = 200000;
+constexpr int kMinObserveSteps = 1000, kMaxObserveSteps = 100000;
+constexpr double kMaxFrequencyRatio = 1000.0;
+constexpr double kMinStep = 1e-9, kMaxStep = 1.0;          // s
+constexpr double kMaxStiffness = 1e15;                     // N/m
+constexpr double kMaxMassRatio = 1e9;
+constexpr int kMaxChainIterations = 256;
+
+const char* verdict_name(Verdict v) {
+  return v == Verdict::stable ? "stable" : v == Verdict::marginal ? "marginal" : "unstable";
+}
+
+json warnings_of(std::uint8_t flags) {
+  json out = json::array();
+  if (flags & kBeyondNyquist) out.push_back("beyond_nyquist");
+  if (flags & kFewStepsPerPeriod) out.push_back("few_steps_per_period");
+  if (flags & kExactClampedToNyquist) out.push_back("exact_clamped_to_nyquist");
+  if (flags & kExactOverflowFallback) out.push_back("exact_overflow_fallback");
+  if (flags & kMismatch) out.push_back("prediction_mismatch");
+  return out;
+}
+
+json case_json(const SweepCase& c) {
+  return {
+      {"method", method_name(c.method)},
+      {"family", c.family == SweepFamily::frequency_ratio ? "frequency_ratio" : "stiffness"},
+      {"frequency_ratio", number_or_null(c.frequency_ratio)},
+      {"damping_ratio", number_or_null(c.damping_ratio)},
+      {"mass", number_or_null(c.mass)},
+      {"stiffness", number_or_null(c.stiffness)},
+      {"h", number_or_null(c.h)},
+      {"omega_h", number_or_null(std::sqrt(c.stiffness / c.mass) * c.h)},
+      {"spectral_radius", number_or_null(c.spectral_radius)},
+      {"predicted", verdict_name(c.predicted)},
+      {"predicted_stable", c.predicted != Verdict::unstable},
+      {"observed_spectral_radius", number_or_null(c.observed_spectral_radius)},
+      {"observed", verdict_name(c.observed)},
+      {"observed_stable", c.observed != Verdict::unstable},
+      {"warnings", warnings_of(c.warnings)},
+  };
+}
+
+std::optional<Method> method_from_name(const std::string& name) {
+  for (Method m : kAllMethods) {
+    if (method_name(m) == name) return m;
+  }
+  return std::nullopt;
+}
+
+std::vector<Method> read_methods(ObjectReader& r) {
+  const json* v = r.raw("methods");
+  std::string rule = "must be an array of method names:";
+  for (Method m : kAllMethods) rule += std::string(" ") + std::string(method_name(m));
+  if (!v) return {kAllMethods.begin(), kAllMethods.end()};
+  if (!v->is_array() || v->empty() || v->size() > kAllMethods.size()) throw invalid_field("methods", rule);
+  std::vector<Method> out;
+  for (std::size_t i = 0; i < v->size(); ++i) {
+    const auto m = (*v)[i].is_string() ? method_from_name((*v)[i].get<std::string>()) : std::nullopt;
+    if (!m) throw invalid_field("methods[" + std::to_string(i) + "]", rule);
+    out.push_back(*m);
+  }
+  return out;
+}
+
+void read_chain(ObjectReader& parent, StabilityRequest& q) {
+  const json* v = parent.raw("chain");
+  if (!v) return;
+  if (v->is_boolean()) {
+    q.run_chain = v->get<bool>();
+    return;
+  }
+  if (!v->is_object()) throw invalid_field("chain", "must be true, false or an object");
+  ObjectReader r = *parent.object("chain");
+  ChainSweepSettings& c = q.chain;
+  if (auto x = read_number_list(r, "mass_ratios", kMaxGridEntries, 1.0, kMaxMassRatio, "")) c.mass_ratios = *x;
+  if (auto x = read_integer_list(r, "iterations", kMaxGridEntries, 1, kMaxChainIterations)) c.iterations = *x;
+  if (auto x = read_number_list(r, "frequency_ratios", kMaxGridEntries, 1e-6, kMaxFrequencyRatio, "")) c.frequency_ratios = *x;
+  std::sort(c.frequency_ratios.begin(), c.frequency_ratios.end());
+  if (auto z = r.number("damping_ratio")) {
+    if (!(*z >= 0.0 && *z <= limits::kMaxDampingRatio)) throw invalid_field("chain.damping_ratio", "must be a number in [0, 1000]");
+    c.damping_ratio = *z;
+  }
+  if (auto h = r.number("h")) {
+    if (!(*h >= kMinStep && *h <= kMaxStep)) throw invalid_field("chain.h", "must be a number in [1e-9, 1] s");
+    c.h = *h;
+  }
+  r.finish();
+}
+
+json chain_limit_json(const ChainLimit& l) {
+  return {{"mass_ratio", number_or_null(l.mass_ratio)},
+          {"iterations", l.iterations},
+          {"warm_start", l.warm_start},
+          {"highest_stable_frequency_ratio", number_or_null(l.highest_stable_frequency_ratio)},
+          {"highest_stable_frequency_hz", number_or_null(l.highest_stable_frequency_hz)},
+          {"stable_over_whole_scan", l.stable_over_whole_scan}};
+}
+
+json chain_case_json(const ChainCase& c) {
+  return {{"mass_ratio", number_or_null(c.mass_ratio)},
+          {"iterations", c.iterations},
+          {"warm_start", c.warm_start},
+          {"frequency_ratio", number_or_null(c.frequency_ratio)},
+          {"damping_ratio", number_or_null(c.damping_ratio)},
+          {"spectral_radius", number_or_null(c.spectral_radius)},
+          {"predicted", verdict_name(c.predicted)},
+          {"predicted_stable", c.predicted != Verdict::unstable},
+          {"observed_spectral_radius", number_or_null(c.observed_spectral_radius)},
+          {"observed", verdict_name(c.observed)},
+          {"observed_stable", c.observed != Verdict::unstable}};
+}
+
+json chain_json(const StabilityRequest& q, const ChainSweepResult& chain) {
+  json limits = json::array();
+  for (const ChainLimit& l : chain.limits) limits.push_back(chain_limit_json(l));
+  json out = {{"damping_ratio", number_or_null(q.chain.damping_ratio)},
+              {"h", number_or_null(q.chain.h)},
+              {"scanned_frequency_ratios", q.chain.frequency_ratios},
+              {"cases", chain.cases.size()},
+              {"mismatches", chain.mismatches},
+              {"limits", std::move(limits)}};
+  if (q.include_cases) {
+    json cases = json::array();
+    for (const ChainCase& c : chain.cases) cases.push_back(chain_case_json(c));
+    out["case_list"] = std::move(cases);
+  }
+  return out;
+}
+
+}  // namespace
+
+StabilityRequest decode_stability_request(const json& doc) {
+  StabilityRequest q;
+  if (doc.is_null()) return q;
+  ObjectReader r = read_object(doc, "");
+  SweepSettings& s = q.sweep;
+  s.methods = read_methods(r);
+  if (auto x = read_number_list(r, "frequency_ratios", kMaxGridEntries, 1e-6, kMaxFrequencyRatio, "")) s.frequency_ratios = *x;
+  if (auto x = read_number_list(r, "stiffnesses", kMaxGridEntries, 0.0, kMaxStiffness, "N/m")) s.stiffnesses = *x;
+  if (auto x = read_number_list(r, "damping_ratios", kMaxGridEntries, 0.0, limits::kMaxDampingRatio, "")) s.damping_ratios = *x;
+  if (auto x = read_number_list(r, "masses", kMaxGridEntries, limits::kMinMass, limits::kMaxMass, "kg")) s.masses = *x;
+  if (auto x = read_number_list(r, "steps", kMaxGridEntries, kMinStep, kMaxStep, "s")) s.steps = *x;
+  if (auto k = r.number("max_stiffness")) {
+    if (!(*k > 0.0 && *k <= kMaxStiffness)) throw invalid_field("max_stiffness", "must be a number in (0, 1e15] N/m");
+    s.max_stiffness = *k;
+  }
+  if (auto n = r.integer("observe_steps")) {
+    if (*n < kMinObserveSteps || *n > kMaxObserveSteps) throw invalid_field("observe_steps", "must be an integer in [1000, 100000]");
+    s.observe_steps = static_cast<int>(*n);
+  }
+  if (const json* b = r.raw("include_cases")) {
+    if (!b->is_boolean()) throw invalid_field("include_cases", "must be true or false");
+    q.include_cases = b->get<bool>();
+  }
+  read_chain(r, q);
+  r.finish();
+  const std::size_t cases = s.methods.size() * s.steps.size() * s.masses.size() * s.damping_ratios.size() *
+                            (s.frequency_ratios.size() + s.stiffnesses.size());
+  if (cases > kMaxCases) {
+    throw invalid_field("frequency_ratios", "the grid has " + std::to_string(cases) + " cases; the limit is " +
+                                                std::to_string(kMaxCases) + ": shorten the lists");
+  }
+  return q;
+}
+
+json run_stability(const StabilityRequest& q) {
+  StageList stages;
+  stages.add(Stage::validate);
+  stages.add(Stage::stability_sweep);
+  const SweepResult sweep = run_sweep(q.sweep);
+  const SweepSummary& s = sweep.summary;
+  json out;
+  out["summary"] = {
+      {"cases", s.cases},
+      {"predicted_stable", s.predicted_stable},
+      {"predicted_marginal", s.predicted_marginal},
+      {"predicted_unstable", s.predicted_unstable},
+      {"observed_unstable", s.observed_unstable},
+      {"mismatches", s.mismatches},
+      {"soft_blowups", s.soft_blowups},
+      {"non_finite_values", s.non_finite_values},
+      {"observe_steps", std::max(1000, q.sweep.observe_steps)},
+      {"marginal_band", kMarginalBand},
+      {"passed", s.mismatches == 0 && s.soft_blowups == 0 && s.non_finite_values == 0},
+  };
+  if (q.include_cases) {
+    json cases = json::array();
+    for (const SweepCase& c : sweep.cases) cases.push_back(case_json(c));
+    out["cases"] = std::move(cases);
+  }
+  if (q.run_chain) {
+    stages.add(Stage::sequential_impulse_chain);
+    const ChainSweepResult chain = run_chain_sweep(q.chain);
+    out["chain"] = chain_json(q, chain);
+    out["summary"]["passed"] = out["summary"]["passed"].get<bool>() && chain.mismatches == 0;
+  }
+  out["stages"] = stages_json(stages);
+  return out;
+}
+
+json run_stability(const json& doc) { return run_stability(decode_stability_request(doc)); }
+
+plot::Plot stability_map_plot(double damping_ratio) {
+  using plot::Scale;
+  char title[160];
+  std::snprintf(title, sizeof title, "Stability map at zeta = %g: spectral radius against omega h (dashed: 1)", damping_ratio);
+  plot::Plot p{title, plot::make_axis("omega h", "rad", Scale::log), plot::make_axis("spectral radius", "", Scale::log, 1e-3, 1e3), {}, {1.0}};
+  const double mass = 1.0, h = 1.0;
+  const int samples = 240;
+  for (Method m : kAllMethods) {
+    plot::Series series{std::string(method_name(m)), "", {}, {}, plot::Style::line, false};
+    for (int i = 0; i <= samples; ++i) {
+      const double omega_h = std::pow(10.0, -2.0 + 4.0 * i / samples);
+      const StepModel model = make_step_model(mass, omega_h / h, damping_ratio, h);
+      series.x.push_back(omega_h);
+      series.y.push_back(analyze(m, model, omega_h / h, damping_ratio).spectral_radius);
+    }
+    p.series.push_back(std::move(series));
+  }
+  return p;
+}
+
+std::string stability_svg(const json& encoded) {
+  std::vector<plot::Plot> plots;
+  for (double zeta : {0.0, 0.1, 1.0, 10.0}) plots.push_back(stability_map_plot(zeta));
+  if (encoded.contains("chain")) {
+    using plot::Scale;
+    plot::Plot p{"Sequential impulses, light link + heavy weight: highest stable f h (scan ends at 2)", plot::make_axis("mass ratio m2 / m1", "", Scale::log),
+                 plot::make_axis("highest stable f h", "", Scale::log), {}, {}};
+    for (const json& l : encoded.at("chain").at("limits")) {
+      const std::string name = std::to_string(l.at("iterations").get<int>()) + " iterations" +
+                               (l.at("warm_start").get<bool>() ? ", warm start" : "");
+      auto it = std::find_if(p.series.begin(), p.series.end(), [&](const plot::Series& s) { return s.name == name; });
+      if (it == p.series.end()) {
+        p.series.push_back({name, "", {}, {}, plot::Style::line_and_markers, l.at("warm_start").get<bool>()});
+        it = p.series.end() - 1;
+      }
+      const json& f = l.at("highest_stable_frequency_ratio");
+      it->x.push_back(l.at("mass_ratio").get<double>());
+      it->y.push_back(f.is_null() ? std::nan("") : f.get<double>());
+    }
+    plots.push_back(std::move(p));
+  }
+  return plot::render_svg(plots);
+}
+
+}  // namespace softtune::codec
