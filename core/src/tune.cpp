@@ -15,6 +15,13 @@ std::string_view stage_name(Stage s) {
     case Stage::exact_softness: return "exact_softness";
     case Stage::discrete_analysis: return "discrete_analysis";
     case Stage::engine_export: return "engine_export";
+    case Stage::scene_setup: return "scene_setup";
+    case Stage::core_integrator: return "core_integrator";
+    case Stage::box2d_world: return "box2d_world";
+    case Stage::box2d_step: return "box2d_step";
+    case Stage::snapshots: return "snapshots";
+    case Stage::response_fit: return "response_fit";
+    case Stage::expectations: return "expectations";
   }
   return "unknown";
 }

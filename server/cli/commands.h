@@ -9,5 +9,7 @@ namespace softtune::cli {
 using Args = std::vector<std::string>;
 
 int run_tune(const Args& args);
+int run_simulate(const Args& args);
+int run_check(const Args& args);
 
 }  // namespace softtune::cli

@@ -14,6 +14,8 @@ struct Command {
 
 constexpr Command kCommands[] = {
     {"tune", "designer request -> k, c, gamma, beta, ERP/CFM, engine export, stability", softtune::cli::run_tune},
+    {"simulate", "run a scene or preset in Box2D / the core integrators, measure the achieved response", softtune::cli::run_simulate},
+    {"check", "run every preset's expectations (the automated preset test)", softtune::cli::run_check},
 };
 
 int usage(std::ostream& out, int code) {
