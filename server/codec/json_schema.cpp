@@ -1,5 +1,6 @@
 #include "codec/json_schema.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -38,6 +39,10 @@ bool has_type(const json& v, const std::string& type) {
   }
   throw std::invalid_argument("schema: unknown type \"" + type + "\"");
 }
+
+// The rule text of a failed "const": oneOf uses it to recognise a discriminator ("type": "box") that says the
+// instance was not meant for that alternative.
+constexpr std::string_view kConstRule = "must be exactly ";
 
 const std::set<std::string, std::less<>> kAnnotations = {"$schema", "$id", "$defs", "title", "description", "default", "examples", "$comment"};
 const std::set<std::string, std::less<>> kKeywords = {"type", "properties", "required", "additionalProperties", "items", "enum", "const",
@@ -80,7 +85,7 @@ class Validator {
       }
       if (!ok) return SchemaError{ptr, "must be one of " + names};
     }
-    if (auto c = s.find("const"); c != s.end() && *c != v) return SchemaError{ptr, "must be " + c->dump()};
+    if (auto c = s.find("const"); c != s.end() && *c != v) return SchemaError{ptr, std::string(kConstRule) + c->dump()};
     if (v.is_number()) {
       if (auto e = check_number(v.get<double>(), s, ptr)) return e;
     }
@@ -105,7 +110,7 @@ class Validator {
       for (const json& option : *any) {
         auto e = check(v, option, ptr, depth + 1);
         if (!e) return std::nullopt;
-        if (!best || e->pointer.size() > best->pointer.size()) best = e;
+        if (!best) best = e;
       }
       return best;
     }
@@ -148,37 +153,46 @@ class Validator {
     return std::nullopt;
   }
 
+  // Declared properties first (a wrong discriminator shows before anything else), then unknown fields, then
+  // missing required ones.
   std::optional<SchemaError> check_object(const json& v, const json& s, const std::string& ptr, int depth) const {
+    const auto props = s.find("properties");
+    const auto additional = s.find("additionalProperties");
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      if (props != s.end() && props->contains(it.key())) {
+        if (auto e = check(it.value(), (*props)[it.key()], ptr + "/" + escape(it.key()), depth + 1)) return e;
+      }
+    }
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      if ((props != s.end() && props->contains(it.key())) || additional == s.end()) continue;
+      const std::string child = ptr + "/" + escape(it.key());
+      if (additional->is_boolean() && !additional->get<bool>()) return SchemaError{child, "is not a known field"};
+      if (auto e = check(it.value(), *additional, child, depth + 1)) return e;
+    }
     if (auto req = s.find("required"); req != s.end()) {
       for (const json& name : *req) {
         if (!v.contains(name.get<std::string>()))
           return SchemaError{ptr + "/" + escape(name.get<std::string>()), "is required"};
       }
     }
-    const auto props = s.find("properties");
-    const auto additional = s.find("additionalProperties");
-    for (auto it = v.begin(); it != v.end(); ++it) {
-      const std::string child = ptr + "/" + escape(it.key());
-      if (props != s.end() && props->contains(it.key())) {
-        if (auto e = check(it.value(), (*props)[it.key()], child, depth + 1)) return e;
-      } else if (additional != s.end()) {
-        if (additional->is_boolean() && !additional->get<bool>()) return SchemaError{child, "is not a known field"};
-        if (auto e = check(it.value(), *additional, child, depth + 1)) return e;
-      }
-    }
     return std::nullopt;
   }
 
-  // Exactly one branch must match. When none does, the error of the branch that got deepest into the
-  // instance is the most useful one (it is usually the branch the author meant).
+  // Exactly one branch must match. When none does, report the alternative the instance was most likely meant
+  // for: one whose discriminator (a "const") matched, then the error deepest in the instance, then the first.
   std::optional<SchemaError> check_one_of(const json& v, const json& options, const std::string& ptr, int depth) const {
     int matched = 0;
     std::optional<SchemaError> best;
+    auto score = [](const SchemaError& e) {
+      const bool discriminator = e.rule.rfind(kConstRule, 0) == 0;
+      const auto segments = std::count(e.pointer.begin(), e.pointer.end(), '/');
+      return (discriminator ? 0 : 1000) + segments;
+    };
     for (const json& option : options) {
       auto e = check(v, option, ptr, depth + 1);
       if (!e) {
         ++matched;
-      } else if (!best || e->pointer.size() > best->pointer.size()) {
+      } else if (!best || score(*e) > score(*best)) {
         best = e;
       }
     }
