@@ -109,21 +109,26 @@ Snapshot snapshot(const Scene& scene, Box2DScene& world, int frame) {
   return out;
 }
 
+// What a probe reads, resolved once: the body or joint index behind its id.
+struct ProbeTarget {
+  const ProbeSettings* probe = nullptr;
+  int body = -1, joint = -1;
+  Eigen::Vector2d axis{0, 1};
+};
+
 // One probe's value now, from the world and its state at the start.
-double probe_value(const Scene& scene, const ProbeSettings& p, Box2DScene& world, const std::vector<b2Vec2>& start_centers,
+double probe_value(const Scene& scene, const ProbeTarget& t, Box2DScene& world, const std::vector<b2Vec2>& start_centers,
                    const std::vector<float>& start_angles) {
-  if (p.kind == ProbeKind::displacement || p.kind == ProbeKind::angle) {
-    const int b = find(scene.bodies, p.body);
-    const b2Body* body = world.bodies()[b];
-    if (p.kind == ProbeKind::angle) return body->GetAngle() - start_angles[b];
-    const b2Vec2 d = body->GetWorldCenter() - start_centers[b];
-    return Eigen::Vector2d(d.x, d.y).dot(p.axis.normalized());
+  if (t.body >= 0) {
+    const b2Body* body = world.bodies()[t.body];
+    if (t.probe->kind == ProbeKind::angle) return body->GetAngle() - start_angles[t.body];
+    const b2Vec2 d = body->GetWorldCenter() - start_centers[t.body];
+    return d.x * t.axis.x() + d.y * t.axis.y();
   }
-  const int j = find(scene.joints, p.joint);
-  switch (p.kind) {
-    case ProbeKind::joint_length: return joint_length(scene.joints[j], world.joints()[j]);
-    case ProbeKind::joint_angle: return joint_angle(world.joints()[j]);
-    default: return joint_error(scene.joints[j], world.joints()[j]);
+  switch (t.probe->kind) {
+    case ProbeKind::joint_length: return joint_length(scene.joints[t.joint], world.joints()[t.joint]);
+    case ProbeKind::joint_angle: return joint_angle(world.joints()[t.joint]);
+    default: return joint_error(scene.joints[t.joint], world.joints()[t.joint]);
   }
 }
 
@@ -198,6 +203,20 @@ SceneResult run_scene(const Scene& scene, const RunOptions& options) {
       centers.push_back(b->GetWorldCenter());
       angles.push_back(b->GetAngle());
     }
+    std::vector<ProbeTarget> targets;
+    for (std::size_t p = 0; p < scene.probes.size(); ++p) {
+      const ProbeSettings& probe = scene.probes[p];
+      if (probe.kind == ProbeKind::oscillator) continue;
+      ProbeTarget t{&probe};
+      if (probe.kind == ProbeKind::displacement || probe.kind == ProbeKind::angle) {
+        t.body = find(scene.bodies, probe.body);
+        t.axis = probe.axis.normalized();
+      } else {
+        t.joint = find(scene.joints, probe.joint);
+      }
+      targets.push_back(t);
+      samples[p].reserve(r.frames + 1);
+    }
     std::vector<bool> left(scene.bodies.size(), false);
     const Eigen::Vector4d& bounds = scene.world.bounds;
     const int stride = std::max(1, options.frame_stride);
@@ -205,9 +224,7 @@ SceneResult run_scene(const Scene& scene, const RunOptions& options) {
       if (f > 0) world->step_frame(f - 1);
       for (const b2Body* b : world->bodies()) r.finite = r.finite && body_finite(b);
       if (!r.finite) break;  // a NaN never reaches a probe series
-      for (std::size_t p = 0; p < scene.probes.size(); ++p) {
-        if (scene.probes[p].kind != ProbeKind::oscillator) samples[p].push_back(probe_value(scene, scene.probes[p], *world, centers, angles));
-      }
+      for (const ProbeTarget& t : targets) samples[t.probe - scene.probes.data()].push_back(probe_value(scene, t, *world, centers, angles));
       for (std::size_t j = 0; j < scene.joints.size(); ++j) {
         r.max_constraint_error = std::max(r.max_constraint_error, joint_error(scene.joints[j], world->joints()[j]));
       }
