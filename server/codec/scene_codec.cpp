@@ -6,6 +6,7 @@
 #include "codec/json_writer.h"
 #include "codec/preset_loader.h"
 #include "codec/problem.h"
+#include "codec/tune_codec.h"
 
 namespace softtune::codec {
 namespace {
@@ -24,19 +25,29 @@ std::string required_string(ObjectReader& r, std::string_view key) {
   return *s;
 }
 
-// The designer fields of the tune contract (same names and meanings as `softtune tune`). Empty when the object
-// carries none of them: a rigid joint. The fields are range-checked by validate_tune_request when the runner
-// tunes the joint, with the joint's path.
-std::optional<TuneRequest> read_designer_fields(ObjectReader& r) {
-  TuneRequest q;
-  q.response_frames = r.number("response_frames");
-  if (auto v = r.number("basis_fps")) q.basis_fps = *v;
-  q.frequency_hz = r.number("frequency_hz");
-  if (auto i = r.choice("oscillation", {"free", "some", "none"})) q.oscillation = static_cast<Oscillation>(*i);
-  q.damping_ratio = r.number("damping_ratio");
-  if (auto i = r.choice("mode", {"standard", "exact"})) q.mode = static_cast<SoftMode>(*i);
-  const bool any = q.response_frames || q.frequency_hz || q.oscillation || q.damping_ratio || r.has("basis_fps") || r.has("mode");
-  return any ? std::optional<TuneRequest>(q) : std::nullopt;
+// The designer fields of the tune contract, read by the tune codec itself (read_tune_fields) so a joint accepts
+// exactly what `softtune tune` accepts, with the same rules. The effective mass is a placeholder there: the
+// joint's real one is known only once its bodies exist (the runner tunes it again with it). Empty when the
+// object carries none of them: a rigid joint.
+constexpr const char* kDesignerFields[] = {"response_frames", "basis_fps", "frequency_hz", "oscillation", "damping_ratio", "mode"};
+
+std::optional<TuneRequest> read_designer_fields(ObjectReader& r, const std::string& path) {
+  json designer = json::object();
+  for (const char* key : kDesignerFields) {
+    if (const json* v = r.raw(key)) designer[key] = *v;
+  }
+  if (designer.empty()) return std::nullopt;
+  designer["effective_mass"] = 1.0;
+  ObjectReader fields(designer, path);
+  try {
+    TuneRequest q = read_tune_fields(fields);
+    q.effective_mass.reset();
+    return q;
+  } catch (const Problem& p) {
+    // The core's range checks name the bare field ("response_frames"); give it the joint's path.
+    if (p.field.rfind(path + ".", 0) == 0) throw;
+    throw invalid_field(path + "." + p.field, p.detail);
+  }
 }
 
 template <typename Read>
@@ -45,8 +56,9 @@ void read_list(ObjectReader& parent, std::string_view key, Read read) {
   if (!list) return;
   if (!list->is_array()) throw invalid_field(parent.field(key), "must be an array");
   for (std::size_t i = 0; i < list->size(); ++i) {
-    ObjectReader r = read_object((*list)[i], parent.field(key) + "." + std::to_string(i));
-    read(r);
+    const std::string path = parent.field(key) + "." + std::to_string(i);
+    ObjectReader r = read_object((*list)[i], path);
+    read(r, path);
     r.finish();
   }
 }
@@ -116,7 +128,7 @@ BodySettings read_body(ObjectReader& r) {
   return b;
 }
 
-JointSettings read_joint(ObjectReader& r) {
+JointSettings read_joint(ObjectReader& r, const std::string& path) {
   JointSettings j;
   j.id = required_string(r, "id");
   const auto kind = r.choice("type", {"distance", "wheel", "weld", "mouse", "revolute"});
@@ -134,11 +146,11 @@ JointSettings read_joint(ObjectReader& r) {
   if (auto v = r.number("max_motor_torque")) j.max_motor_torque = *v;
   if (auto v = r.number("motor_start_s")) j.motor_start_s = *v;
   j.collide_connected = read_bool(r, "collide_connected", false);
-  j.tuning = read_designer_fields(r);
+  j.tuning = read_designer_fields(r, path);
   return j;
 }
 
-OscillatorSettings read_oscillator(ObjectReader& r) {
+OscillatorSettings read_oscillator(ObjectReader& r, const std::string& path) {
   OscillatorSettings o;
   o.id = required_string(r, "id");
   if (auto m = r.choice("method", {"explicit_euler", "semi_implicit_euler", "implicit_euler", "soft", "soft_exact"}))
@@ -147,7 +159,7 @@ OscillatorSettings read_oscillator(ObjectReader& r) {
   o.joint = r.string("joint").value_or("");
   if (auto v = r.number("initial_displacement")) o.initial_displacement = *v;
   if (auto v = r.number("initial_velocity")) o.initial_velocity = *v;
-  o.tuning = read_designer_fields(r);
+  o.tuning = read_designer_fields(r, path);
   return o;
 }
 
@@ -275,11 +287,11 @@ Scene decode_scene(const json& doc) {
     if (auto v = camera->number("width_m")) s.camera.width_m = *v;
     camera->finish();
   }
-  read_list(r, "bodies", [&](ObjectReader& o) { s.bodies.push_back(read_body(o)); });
-  read_list(r, "joints", [&](ObjectReader& o) { s.joints.push_back(read_joint(o)); });
-  read_list(r, "oscillators", [&](ObjectReader& o) { s.oscillators.push_back(read_oscillator(o)); });
-  read_list(r, "probes", [&](ObjectReader& o) { s.probes.push_back(read_probe(o)); });
-  read_list(r, "expectations", [&](ObjectReader& o) { s.expectations.push_back(read_expectation(o)); });
+  read_list(r, "bodies", [&](ObjectReader& o, const std::string&) { s.bodies.push_back(read_body(o)); });
+  read_list(r, "joints", [&](ObjectReader& o, const std::string& path) { s.joints.push_back(read_joint(o, path)); });
+  read_list(r, "oscillators", [&](ObjectReader& o, const std::string& path) { s.oscillators.push_back(read_oscillator(o, path)); });
+  read_list(r, "probes", [&](ObjectReader& o, const std::string&) { s.probes.push_back(read_probe(o)); });
+  read_list(r, "expectations", [&](ObjectReader& o, const std::string&) { s.expectations.push_back(read_expectation(o)); });
   r.finish();
   if (auto e = validate_scene(s)) throw_field_error(*e);
   return s;

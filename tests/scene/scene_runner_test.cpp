@@ -33,6 +33,27 @@ BodySettings box(const std::string& id, double w, double h, Eigen::Vector2d at, 
   return b;
 }
 
+JointSettings joint(const std::string& id, JointKind kind, const std::string& a, const std::string& b, std::optional<TuneRequest> tuning) {
+  JointSettings j;
+  j.id = id;
+  j.kind = kind;
+  j.body_a = a;
+  j.body_b = b;
+  j.tuning = tuning;
+  return j;
+}
+
+// A probe reading `target`: a body, joint or oscillator id depending on the kind.
+ProbeSettings probe(const std::string& id, ProbeKind kind, const std::string& target) {
+  ProbeSettings p;
+  p.id = id;
+  p.kind = kind;
+  if (kind == ProbeKind::displacement || kind == ProbeKind::angle) p.body = target;
+  else if (kind == ProbeKind::oscillator) p.oscillator = target;
+  else p.joint = target;
+  return p;
+}
+
 // The talk's Buddhas: identical 2 m x 0.2 m, 4 kg planks in zero gravity, each hung at `offsets` along it.
 Scene buddhas(const std::vector<double>& offsets) {
   Scene s;
@@ -43,20 +64,13 @@ Scene buddhas(const std::vector<double>& offsets) {
   for (std::size_t i = 0; i < offsets.size(); ++i) {
     const double x = 5.0 * i;
     s.bodies.push_back(box("plank" + std::to_string(i), 2.0, 0.2, {x, 0}, 4.0));
-    JointSettings j;
-    j.id = "hanger" + std::to_string(i);
-    j.body_a = "ceiling";
-    j.body_b = "plank" + std::to_string(i);
+    JointSettings j = joint("hanger" + std::to_string(i), JointKind::distance, "ceiling", "plank" + std::to_string(i),
+                            designer(60, Oscillation::some, SoftMode::exact));
     j.anchor_a = {x + offsets[i], 3.0};
     j.anchor_b = {x + offsets[i], 0.0};
     j.length = 2.98;
-    j.tuning = designer(60, Oscillation::some, SoftMode::exact);
     s.joints.push_back(j);
-    ProbeSettings p;
-    p.id = j.id;
-    p.kind = ProbeKind::joint_length;
-    p.joint = j.id;
-    s.probes.push_back(p);
+    s.probes.push_back(probe(j.id, ProbeKind::joint_length, j.id));
   }
   return s;
 }
@@ -126,36 +140,17 @@ TEST(SceneRunner, Box2DsOwnKAgreesWithTheCoreForEveryJointKind) {
   s.bodies.push_back(box("crate", 1.0, 0.6, {5, 0}, 5.0));
   s.bodies.push_back(box("arm", 2.0, 0.3, {9, 0}, 3.0));
   s.bodies.push_back(box("base", 1.0, 1.0, {11, 0}, 7.0));
-  JointSettings w;
-  w.id = "suspension";
-  w.kind = JointKind::wheel;
-  w.body_a = "chassis";
-  w.body_b = "wheel";
+  JointSettings w = joint("suspension", JointKind::wheel, "chassis", "wheel", designer(20, Oscillation::some));
   w.anchor_b = {-1.1, 0.4};
   w.axis = {0.3, 1.0};
-  w.tuning = designer(20, Oscillation::some);
-  JointSettings d;
-  d.id = "rope";
-  d.kind = JointKind::distance;
-  d.body_a = "chassis";
-  d.body_b = "crate";
+  JointSettings d = joint("rope", JointKind::distance, "chassis", "crate", designer(30, Oscillation::some));
   d.anchor_a = {1.2, 1.1};
   d.anchor_b = {4.7, 0.25};
-  d.tuning = designer(30, Oscillation::some);
-  JointSettings m;
-  m.id = "drag";
-  m.kind = JointKind::mouse;
-  m.body_b = "crate";
+  JointSettings m = joint("drag", JointKind::mouse, "", "crate", designer(30, Oscillation::none));
   m.anchor_b = {5.4, -0.2};
   m.target = {6.0, 1.0};
-  m.tuning = designer(30, Oscillation::none);
-  JointSettings weld;
-  weld.id = "weld";
-  weld.kind = JointKind::weld;
-  weld.body_a = "arm";
-  weld.body_b = "base";
+  JointSettings weld = joint("weld", JointKind::weld, "arm", "base", designer(30, Oscillation::some));
   weld.anchor_a = {10.2, 0};
-  weld.tuning = designer(30, Oscillation::some);
   s.joints = {w, d, m, weld};
   ASSERT_FALSE(validate_scene(s));
   Box2DScene world(s, MassModel::effective);
@@ -195,17 +190,13 @@ Scene hanging_weight(double frequency_hz, Oscillation level) {
   BodySettings weight = box("weight", 0.3, 0.3, {0, 0.9}, 1.0);
   weight.fixed_rotation = true;
   s.bodies.push_back(weight);
-  JointSettings j;
-  j.id = "spring";
-  j.body_a = "anchor";
-  j.body_b = "weight";
-  j.anchor_a = {0, 2};
-  j.anchor_b = {0, 0.9};
-  j.length = 1.0;
   TuneRequest q;
   q.frequency_hz = frequency_hz;
   q.oscillation = level;
-  j.tuning = q;
+  JointSettings j = joint("spring", JointKind::distance, "anchor", "weight", q);
+  j.anchor_a = {0, 2};
+  j.anchor_b = {0, 0.9};
+  j.length = 1.0;
   s.joints.push_back(j);
   OscillatorSettings o;
   o.id = "soft";
@@ -213,15 +204,9 @@ Scene hanging_weight(double frequency_hz, Oscillation level) {
   o.joint = "spring";
   o.initial_displacement = 0.1;
   s.oscillators.push_back(o);
-  ProbeSettings body_probe;
-  body_probe.id = "body";
-  body_probe.body = "weight";
+  ProbeSettings body_probe = probe("body", ProbeKind::displacement, "weight");
   body_probe.axis = {0, -1};
-  ProbeSettings core_probe;
-  core_probe.id = "core";
-  core_probe.kind = ProbeKind::oscillator;
-  core_probe.oscillator = "soft";
-  s.probes = {body_probe, core_probe};
+  s.probes = {body_probe, probe("core", ProbeKind::oscillator, "soft")};
   return s;
 }
 
@@ -255,11 +240,7 @@ TEST(SceneRunner, TheOscillatorRunsWithoutBox2D) {
   o.method = Method::soft_exact;
   o.tuning = designer(30, Oscillation::some, SoftMode::exact);
   s.oscillators.push_back(o);
-  ProbeSettings p;
-  p.id = "x";
-  p.kind = ProbeKind::oscillator;
-  p.oscillator = "x";
-  s.probes.push_back(p);
+  s.probes.push_back(probe("x", ProbeKind::oscillator, "x"));
   const SceneResult r = run_scene(s);
   ASSERT_FALSE(r.error);
   EXPECT_TRUE(r.stages.contains(Stage::core_integrator));
@@ -293,11 +274,7 @@ TEST(SceneRunner, ExplicitAndSemiImplicitBlowUpWhereTheSoftConstraintDoesNot) {
     o.id = std::string(method_name(m));
     o.method = m;
     s.oscillators.push_back(o);
-    ProbeSettings p;
-    p.id = o.id;
-    p.kind = ProbeKind::oscillator;
-    p.oscillator = o.id;
-    s.probes.push_back(p);
+    s.probes.push_back(probe(o.id, ProbeKind::oscillator, o.id));
   }
   const SceneResult r = run_scene(s);
   ASSERT_FALSE(r.error);

@@ -111,7 +111,13 @@ Box2DScene::Box2DScene(const Scene& scene, MassModel model) : scene_(scene) {
     } else {
       body_a = bodies_[index_of(scene.bodies, j.body_a)];
     }
-    const float k = static_cast<float>(t.stiffness), c = static_cast<float>(t.damping);
+    // Every soft joint def of Box2D 2.4 takes stiffness (N/m, or N m/rad for the weld) and damping.
+    auto create = [&](auto& def) {
+      def.stiffness = static_cast<float>(t.stiffness);
+      def.damping = static_cast<float>(t.damping);
+      def.collideConnected = j.collide_connected;
+      return world_->CreateJoint(&def);
+    };
     b2Joint* joint = nullptr;
     switch (j.kind) {
       case JointKind::distance: {
@@ -125,32 +131,23 @@ Box2DScene::Box2DScene(const Scene& scene, MassModel model) : scene_(scene) {
         d.length = static_cast<float>(j.length.value_or((j.anchor_b - j.anchor_a).norm()));
         d.minLength = t.tuned ? 0.0f : d.length;
         d.maxLength = t.tuned ? FLT_MAX : d.length;
-        d.stiffness = k;
-        d.damping = c;
-        d.collideConnected = j.collide_connected;
-        joint = world_->CreateJoint(&d);
+        joint = create(d);
         break;
       }
       case JointKind::wheel: {
         b2WheelJointDef w;
         w.Initialize(body_a, body_b, vec(j.anchor_b), vec(j.axis.normalized()));
-        w.stiffness = k;
-        w.damping = c;
         w.motorSpeed = static_cast<float>(j.motor_speed);
         w.maxMotorTorque = static_cast<float>(j.max_motor_torque);
         w.enableMotor = j.max_motor_torque > 0.0 && j.motor_start_s <= 0.0;
-        w.collideConnected = j.collide_connected;
-        joint = world_->CreateJoint(&w);
+        joint = create(w);
         break;
       }
       case JointKind::weld: {
         // b2WeldJointDef: stiffness in N m (per rad), damping in N m s; 0 = rigid.
         b2WeldJointDef w;
         w.Initialize(body_a, body_b, vec(j.anchor_a));
-        w.stiffness = k;
-        w.damping = c;
-        w.collideConnected = j.collide_connected;
-        joint = world_->CreateJoint(&w);
+        joint = create(w);
         break;
       }
       case JointKind::mouse: {
@@ -161,9 +158,7 @@ Box2DScene::Box2DScene(const Scene& scene, MassModel model) : scene_(scene) {
         m.bodyB = body_b;
         m.target = vec(j.anchor_b);
         m.maxForce = static_cast<float>(j.max_force);
-        m.stiffness = k;
-        m.damping = c;
-        auto* mouse = static_cast<b2MouseJoint*>(world_->CreateJoint(&m));
+        auto* mouse = static_cast<b2MouseJoint*>(create(m));
         mouse->SetTarget(vec(j.target));
         joint = mouse;
         break;

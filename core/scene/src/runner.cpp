@@ -251,7 +251,7 @@ SceneResult run_scene(const Scene& scene, const RunOptions& options) {
       diverged = o.diverged_at_s.has_value();
       if (!f_req) f_req = o.requested_frequency_hz;
       if (!zeta_req) zeta_req = o.requested_damping_ratio;
-    } else if (!probe.joint.empty()) {
+    } else if (!probe.joint.empty() && probe.kind != ProbeKind::joint_error) {  // a rigid row has no request
       const JointTuning& t = r.joints[find_joint_tuning(r.joints, probe.joint)];
       if (t.tuned) {
         if (!f_req) f_req = t.requested_frequency_hz;

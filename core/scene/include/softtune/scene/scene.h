@@ -99,6 +99,7 @@ struct ProbeSettings {
   ProbeKind kind = ProbeKind::displacement;
   std::string body;                        ///< displacement, angle
   std::string joint;                       ///< joint probes; for body probes, the joint whose request applies
+                                           ///< (joint_error probes have no request: they measure a rigid row)
   std::string oscillator;                  ///< oscillator probes
   Eigen::Vector2d axis{0, 1};              ///< displacement direction (normalised by the runner)
   double from_s = 0.0;                     ///< s, start of the window the response is measured on
