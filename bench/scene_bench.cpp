@@ -2,9 +2,11 @@
 // stepping loop of the same world in the same run (goal: overhead <= 1.1x). The raw loop builds the same world
 // (Box2DScene: bodies, tuned joints) and calls b2World::Step itself, switching wheel motors on at the same
 // frames; the runner adds probe sampling, joint-error and bounds checks every frame and the response fit.
-// The 1-D oscillator has no Box2D world: its raw loop is the core's step() on the same oscillators.
+// Core-integrator oscillators (the 1-D oscillator, the stiff scene's comparison) are stepped directly with
+// step() in the raw loop too.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <ctime>
 #include <memory>
 
@@ -22,7 +24,34 @@ const char* const kPresets[] = {"oscillator", "buddhas", "mouse", "stiff", "chai
 
 Scene load(const std::string& name) { return codec::decode_scene(codec::load_preset(SOFTTUNE_PRESETS_DIR, name)); }
 
-double raw_box2d(const Scene& scene) {
+// The core oscillators of a scene stepped directly; a joint-linked one takes the joint's tuning and mass.
+double raw_core(const Scene& scene, const std::vector<JointTuning>& joints) {
+  double sink = 0.0;
+  for (const OscillatorSettings& o : scene.oscillators) {
+    TuneRequest q;
+    if (o.joint.empty()) {
+      q = *o.tuning;
+      q.effective_mass = o.effective_mass;
+    } else {
+      for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+        if (scene.joints[j].id != o.joint) continue;
+        q = *scene.joints[j].tuning;
+        q.effective_mass = joints[j].model_mass;
+      }
+    }
+    q.fps = scene.world.fps;
+    q.substeps = scene.world.substeps;
+    const TuneResult t = tune(q);
+    const StepModel model = make_step_model(t.effective_mass, t.omega, t.damping_ratio, t.h);
+    State s{o.initial_displacement, o.initial_velocity};
+    for (int f = 0; f < frame_count(scene.world) * scene.world.substeps && std::abs(s.x) < kDivergence; ++f) s = step(o.method, s, model);
+    sink += s.x;
+  }
+  return sink;
+}
+
+double raw(const Scene& scene) {
+  if (scene.bodies.empty()) return raw_core(scene, {});
   Box2DScene built(scene, scene.mass_model);
   b2World& world = built.world();
   const WorldSettings& w = scene.world;
@@ -36,26 +65,8 @@ double raw_box2d(const Scene& scene) {
     }
     for (int k = 0; k < w.substeps; ++k) world.Step(dt, w.velocity_iterations, w.position_iterations);
   }
-  return world.GetBodyList()->GetPosition().x;
+  return world.GetBodyList()->GetPosition().x + raw_core(scene, built.tunings());
 }
-
-double raw_core(const Scene& scene) {
-  double sink = 0.0;
-  for (const OscillatorSettings& o : scene.oscillators) {
-    TuneRequest q = *o.tuning;
-    q.effective_mass = o.effective_mass;
-    q.fps = scene.world.fps;
-    q.substeps = scene.world.substeps;
-    const TuneResult t = tune(q);
-    const StepModel model = make_step_model(t.effective_mass, t.omega, t.damping_ratio, t.h);
-    State s{o.initial_displacement, o.initial_velocity};
-    for (int f = 0; f < frame_count(scene.world) * scene.world.substeps; ++f) s = step(o.method, s, model);
-    sink += s.x;
-  }
-  return sink;
-}
-
-double raw(const Scene& scene) { return scene.bodies.empty() ? raw_core(scene) : raw_box2d(scene); }
 
 void BM_Raw(benchmark::State& state, const char* name) {
   const Scene scene = load(name);

@@ -66,7 +66,7 @@ ResponseFit fit_response(const std::vector<double>& x, double h) {
     for (int i = 0; i < n; ++i) scale = std::max(scale, std::abs(x[i] - mean));
     if (scale > 0.0) {
       const int rows = n - 2;
-      Eigen::MatrixXd a(rows, 3);
+      Eigen::Matrix<double, Eigen::Dynamic, 3> a(rows, 3);
       Eigen::VectorXd y(rows);
       for (int i = 0; i < rows; ++i) {
         a(i, 0) = (x[i + 1] - mean) / scale;
@@ -74,8 +74,12 @@ ResponseFit fit_response(const std::vector<double>& x, double h) {
         a(i, 2) = 1.0;
         y(i) = (x[i + 2] - mean) / scale;
       }
-      const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
-      if (qr.rank() == 3) {
+      // Householder QR on three columns; the fit is refused when R is (numerically) singular, e.g. a pure
+      // exponential, whose two lagged columns are proportional.
+      const Eigen::HouseholderQR<Eigen::Matrix<double, Eigen::Dynamic, 3>> qr(a);
+      const Eigen::Matrix3d r = qr.matrixQR().topRows<3>().triangularView<Eigen::Upper>();
+      const double largest = r.diagonal().cwiseAbs().maxCoeff();
+      if (largest > 0.0 && r.diagonal().cwiseAbs().minCoeff() > 1e-10 * largest) {
         const Eigen::Vector3d p = qr.solve(y);
         out.samples_used = n;
         out.residual = (a * p - y).norm() / std::max(y.norm(), 1e-300);

@@ -217,24 +217,21 @@ double joint_angle(const b2Joint* joint) {
 }
 
 double joint_error(const JointSettings& s, const b2Joint* joint) {
+  // Springs (tuned distance joints, mouse joints) have no rigid row: answer before touching the anchors.
+  if (s.kind == JointKind::mouse || (s.kind == JointKind::distance && s.tuning)) return 0.0;
   auto* j = const_cast<b2Joint*>(joint);
   const Eigen::Vector2d gap = eig(j->GetAnchorB()) - eig(j->GetAnchorA());
   switch (s.kind) {
-    case JointKind::revolute:
-    case JointKind::weld:
-      return gap.norm();
     case JointKind::wheel: {
       auto* w = static_cast<b2WheelJoint*>(j);
       const Eigen::Vector2d axis = eig(w->GetBodyA()->GetWorldVector(w->GetLocalAxisA()));
       return std::abs(gap.dot(Eigen::Vector2d(-axis.y(), axis.x())));
     }
     case JointKind::distance:
-      if (s.tuning) return 0.0;
       return std::abs(gap.norm() - static_cast<b2DistanceJoint*>(j)->GetLength());
-    case JointKind::mouse:
-      return 0.0;
+    default:  // revolute, weld: the anchors coincide
+      return gap.norm();
   }
-  return 0.0;
 }
 
 }  // namespace softtune::scene
