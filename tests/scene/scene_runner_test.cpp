@@ -306,7 +306,16 @@ TEST(SceneValidation, NamesTheFieldAndTheRule) {
   EXPECT_EQ(validate_scene(s)->field, "bodies.1.shape.vertices");
 
   s = buddhas({0.5});
+  s.bodies[1].shape.kind = ShapeKind::polygon;
+  s.bodies[1].shape.vertices = {{0, 0}, {1, 0}, {1, 1}, {0.001, 1.001}, {0, 1}};  // an edge Box2D would weld
+  EXPECT_EQ(validate_scene(s)->field, "bodies.1.shape.vertices");
+
+  s = buddhas({0.5});
   s.world.duration_s = 1e9;
+  EXPECT_EQ(validate_scene(s)->field, "world.duration_s");
+  s = buddhas(std::vector<double>(60, 0.0));  // 121 bodies and joints for 600 s at 60 fps x 5 substeps
+  s.world.duration_s = 600;
+  s.world.substeps = 5;
   EXPECT_EQ(validate_scene(s)->field, "world.duration_s");
 
   // A designer field out of range is refused by the core's validation with the joint's path.

@@ -75,6 +75,10 @@ std::optional<FieldError> check_body(const BodySettings& b, const std::string& p
       if (!finite_vector(v, limits::kMaxSize)) return FieldError{path + ".shape.vertices", range(-limits::kMaxSize, limits::kMaxSize, "m")};
     }
     if (!convex(s.vertices)) return FieldError{path + ".shape.vertices", "must be a convex polygon with non-zero area, no repeated or collinear points"};
+    for (std::size_t i = 0; i < s.vertices.size(); ++i) {
+      if ((s.vertices[(i + 1) % s.vertices.size()] - s.vertices[i]).norm() < limits::kMinJointLength)
+        return FieldError{path + ".shape.vertices", "edges must be at least " + std::to_string(limits::kMinJointLength) + " m long (Box2D welds closer vertices)"};
+    }
   }
   if (b.mass && !in(*b.mass, limits::kMinBodyMass, limits::kMaxBodyMass))
     return FieldError{path + ".mass", range(limits::kMinBodyMass, limits::kMaxBodyMass, "kg")};
@@ -234,6 +238,10 @@ std::optional<FieldError> validate_scene(const Scene& s) {
   if (s.oscillators.size() > limits::kMaxOscillators) return FieldError{"oscillators", "must hold at most " + std::to_string(limits::kMaxOscillators)};
   if (s.probes.size() > limits::kMaxProbes) return FieldError{"probes", "must hold at most " + std::to_string(limits::kMaxProbes)};
   if (s.bodies.empty() && s.oscillators.empty()) return FieldError{"bodies", "a scene needs bodies or oscillators"};
+  const double steps = static_cast<double>(frame_count(s.world)) * s.world.substeps;
+  if (steps * static_cast<double>(s.bodies.size() + s.joints.size()) > limits::kMaxBodySteps)
+    return FieldError{"world.duration_s", "duration_s * fps * substeps * (bodies + joints) must not exceed " +
+                                              std::to_string(static_cast<long long>(limits::kMaxBodySteps)) + ": shorten the run or the scene"};
   if (auto e = check_unique_ids(s.bodies, "bodies")) return e;
   if (auto e = check_unique_ids(s.joints, "joints")) return e;
   if (auto e = check_unique_ids(s.oscillators, "oscillators")) return e;
