@@ -20,6 +20,13 @@ std::string_view stage_name(Stage s) {
     case Stage::recommendation: return "recommendation";
     case Stage::stability_sweep: return "stability_sweep";
     case Stage::sequential_impulse_chain: return "sequential_impulse_chain";
+    case Stage::scene_setup: return "scene_setup";
+    case Stage::core_integrator: return "core_integrator";
+    case Stage::box2d_world: return "box2d_world";
+    case Stage::box2d_step: return "box2d_step";
+    case Stage::snapshots: return "snapshots";
+    case Stage::response_fit: return "response_fit";
+    case Stage::expectations: return "expectations";
   }
   return "unknown";
 }

@@ -12,5 +12,7 @@ int run_tune(const Args& args);
 int run_serve(const Args& args);
 int run_accuracy(const Args& args);
 int run_stability(const Args& args);
+int run_simulate(const Args& args);
+int run_check(const Args& args);
 
 }  // namespace softtune::cli

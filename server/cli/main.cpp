@@ -17,6 +17,8 @@ constexpr Command kCommands[] = {
     {"serve", "the REST API and the page on http://127.0.0.1:8080/", softtune::cli::run_serve},
     {"accuracy", "work-precision report: error against CPU time per method, and a recommendation", softtune::cli::run_accuracy},
     {"stability", "extreme-case sweep: predicted against observed stability, mass-ratio chain", softtune::cli::run_stability},
+    {"simulate", "run a scene or preset in Box2D / the core integrators, measure the achieved response", softtune::cli::run_simulate},
+    {"check", "run every preset's expectations (the automated preset test)", softtune::cli::run_check},
 };
 
 int usage(std::ostream& out, int code) {

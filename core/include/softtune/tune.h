@@ -36,8 +36,11 @@ struct TuneRequest {
 
 /// The stages a computation ran, in order; the response lists them so callers see what was left out.
 enum class Stage : std::uint8_t {
+  // tune
   validate, designer_mapping, effective_mass, softness, exact_softness, discrete_analysis, engine_export,
-  // Later stages (scenes, rendering) extend this list.
+  // scenes
+  scene_setup, core_integrator, box2d_world, box2d_step, snapshots, response_fit, expectations,
+  // accuracy and stability
   accuracy_runs, box2d_distance_joint, recommendation, stability_sweep, sequential_impulse_chain,
 };
 std::string_view stage_name(Stage s);

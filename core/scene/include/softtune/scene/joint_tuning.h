@@ -1,0 +1,53 @@
+#pragma once
+// A joint's designer tuning -> the k, c Box2D 2.4 takes, through the core (softtune::tune) with the mass the
+// scene's mass model picks. The effective mass is the core's inverse_effective_mass(Constraint2D) of the
+// joint's configuration; the Constraint2D is built to be the same 1-D constraint Box2D 2.4.1 solves:
+//   distance: linear along u = (pB - pA)/|pB - pA|, K = 1/mA + iA (rA x u)^2 + 1/mB + iB (rB x u)^2
+//             (box2d v2.4.1 src/dynamics/b2_distance_joint.cpp, InitVelocityConstraints)
+//   wheel:    linear along the axis ax with lever d + rA = pB - cA for body A and rB for body B:
+//             K = mA + mB + iA sAx^2 + iB sBx^2, sAx = (d + rA) x ax, sBx = rB x ax
+//             (box2d v2.4.1 src/dynamics/b2_wheel_joint.cpp, "Spring constraint")
+//   weld:     angular, K = iA + iB (b2_weld_joint.cpp, the soft angular row when stiffness > 0)
+//   mouse:    linear from a fixed target to body B's anchor along the pull direction n: the 2x2 mass matrix of
+//             b2_mouse_joint.cpp gives n^T K n = 1/mB + iB (rB x n)^2
+// Box2D 2.4 then builds gamma = 1 / (h (c + h k)), bias = C h k gamma with its own, identical K, so a single
+// soft joint on a free body is the 1-D oscillator (m_eff, k, c) solved by implicit Euler.
+
+#include <optional>
+#include <string>
+
+#include "softtune/effective_mass.h"
+#include "softtune/scene/scene.h"
+#include "softtune/tune.h"
+
+namespace softtune::scene {
+
+struct JointTuning {
+  std::string joint;                     ///< joint id
+  bool tuned = false;                    ///< false: a rigid joint, nothing below applies
+  bool angular = false;                  ///< weld: k in N m/rad, c in N m s/rad, masses in kg m^2
+  MassModel mass_model = MassModel::effective;
+  double effective_mass = 0.0;           ///< kg (kg m^2), 1 / K of the joint at the start
+  double box2d_reduced_mass = 0.0;       ///< kg (kg m^2), b2LinearStiffness's / b2AngularStiffness's mass
+  double model_mass = 0.0;               ///< the one the mass model picked and k, c were computed with
+  double requested_frequency_hz = 0.0;   ///< Hz, the designer's request
+  double requested_damping_ratio = 0.0;
+  double stiffness = 0.0;                ///< k given to Box2D (N/m or N m/rad)
+  double damping = 0.0;                  ///< c given to Box2D (N s/m or N m s/rad)
+  /// The frequency this k gives on the true effective mass: f sqrt(model_mass / effective_mass), Hz.
+  double predicted_frequency_hz = 0.0;
+  bool fell_back_to_standard = false;    ///< exact mode had no finite gamma (zeta = 0): standard k, c used
+  TuneResult result;                     ///< the core's full answer (warnings, stages, softness)
+};
+
+/// The core constraint Box2D solves for this joint, from the bodies' mass data at the start.
+Constraint2D joint_constraint(const JointSettings& joint, const Body2D& body_a, const Body2D& body_b);
+
+/// Tunes one joint: fills fps and substeps from the world and the mass from `model`, validates, runs
+/// softtune::tune(). A rigid joint (no tuning) returns `tuned = false`. A failed validation returns the error
+/// with its field prefixed by `path` ("joints.3").
+std::optional<FieldError> tune_joint(const JointSettings& joint, const Constraint2D& constraint,
+                                     const WorldSettings& world, MassModel model, const std::string& path,
+                                     JointTuning& out);
+
+}  // namespace softtune::scene

@@ -1,0 +1,174 @@
+#pragma once
+// A scene: bodies, soft joints tuned in designer units, a world, a camera, probes and the expectations its
+// preset test checks. Plain settings with a default on every member (STYLE.md, Jolt's XxxSettings); the
+// runtime state lives in the runner. Nothing here knows about JSON or Box2D.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "softtune/methods.h"
+#include "softtune/tune.h"
+#include "softtune/validation.h"
+
+namespace softtune::scene {
+
+enum class ShapeKind { box, circle, polygon };
+
+struct ShapeSettings {
+  ShapeKind kind = ShapeKind::box;
+  double width = 1.0;                      ///< m, box
+  double height = 1.0;                     ///< m, box
+  double radius = 0.5;                     ///< m, circle
+  std::vector<Eigen::Vector2d> vertices;   ///< m, polygon, body frame, convex, 3..8 (Box2D's b2_maxPolygonVertices)
+};
+
+struct BodySettings {
+  std::string id;
+  ShapeSettings shape;
+  bool is_static = false;
+  std::optional<double> mass;              ///< kg; when set, the density is chosen to give this mass
+  double density = 1.0;                    ///< kg/m^2, used when mass is absent
+  Eigen::Vector2d position{0, 0};          ///< m, world position of the body origin (the shape's centre)
+  double angle = 0.0;                      ///< rad
+  Eigen::Vector2d linear_velocity{0, 0};   ///< m/s
+  double angular_velocity = 0.0;           ///< rad/s
+  double friction = 0.6;
+  double restitution = 0.0;
+  bool fixed_rotation = false;             ///< a body without rotation needs no inertia
+};
+
+enum class JointKind {
+  distance,  ///< b2DistanceJoint: soft along the anchor-to-anchor line when tuned, rigid rod otherwise
+  wheel,     ///< b2WheelJoint: soft along `axis` (suspension), rigid across it, free rotation, optional motor
+  weld,      ///< b2WeldJoint: soft in rotation when tuned, rigid in translation
+  mouse,     ///< b2MouseJoint: body_b's anchor pulled to `target`, soft when tuned
+  revolute,  ///< b2RevoluteJoint: a rigid pin (chains, bridge decks); never tuned
+};
+
+/// Which mass turns the designer's frequency into k = m omega^2, c = 2 m zeta omega.
+enum class MassModel {
+  effective,      ///< 1 / (J M^-1 J^T) at the joint's configuration, rotation included (the talk's choice)
+  box2d_reduced,  ///< what b2LinearStiffness / b2AngularStiffness use: mA mB / (mA + mB), rotation ignored
+};
+
+struct JointSettings {
+  std::string id;
+  JointKind kind = JointKind::distance;
+  std::string body_a;                      ///< body id; empty for a mouse joint (Box2D wants a ground body)
+  std::string body_b;
+  Eigen::Vector2d anchor_a{0, 0};          ///< m, world point on body_a at the start
+  Eigen::Vector2d anchor_b{0, 0};          ///< m, world point on body_b at the start
+  Eigen::Vector2d axis{0, 1};              ///< wheel: suspension direction in the world at the start
+  std::optional<double> length;            ///< m, distance: rest length; default = the starting distance
+  Eigen::Vector2d target{0, 0};            ///< m, mouse: the point the anchor is pulled to from the start
+  double max_force = 1.0e9;                ///< N, mouse: Box2D's maxForce (0 would mean no pull at all)
+  double motor_speed = 0.0;                ///< rad/s, wheel motor (0 = no motor)
+  double max_motor_torque = 0.0;           ///< N m, wheel motor
+  double motor_start_s = 0.0;              ///< s, wheel motor switches on at this time
+  bool collide_connected = false;
+  /// The designer's tuning (response_frames / frequency_hz, oscillation / damping_ratio, mode); fps, substeps
+  /// and the effective mass are filled in by the runner. Empty: a rigid joint.
+  std::optional<TuneRequest> tuning;
+};
+
+/// A 1-D oscillator run on the core integrators only (no Box2D): the talk's first scene, and the explicit /
+/// semi-implicit comparison of the stiff scene.
+struct OscillatorSettings {
+  std::string id;
+  Method method = Method::soft;
+  std::optional<double> effective_mass;    ///< kg; or take it from `joint`
+  std::string joint;                       ///< a tuned joint whose m_eff, tuning and fps this oscillator copies
+  std::optional<TuneRequest> tuning;       ///< when not copied from `joint`
+  double initial_displacement = 0.1;       ///< m
+  double initial_velocity = 0.0;           ///< m/s
+};
+
+enum class ProbeKind {
+  displacement,  ///< a body's centre displacement from its start, along `axis`, m
+  angle,         ///< a body's rotation from its start, rad
+  joint_length,  ///< distance: length; wheel: translation along the axis; mouse: anchor-to-target; m
+  joint_angle,   ///< weld: relative rotation minus the reference angle, rad
+  joint_error,   ///< the joint's rigid error: revolute/weld anchor gap, wheel off-axis drift, rigid rod stretch, m
+  oscillator,    ///< a core-integrator oscillator's x, m
+};
+
+struct ProbeSettings {
+  std::string id;
+  ProbeKind kind = ProbeKind::displacement;
+  std::string body;                        ///< displacement, angle
+  std::string joint;                       ///< joint probes; for body probes, the joint whose request applies
+                                           ///< (joint_error probes have no request: they measure a rigid row)
+  std::string oscillator;                  ///< oscillator probes
+  Eigen::Vector2d axis{0, 1};              ///< displacement direction (normalised by the runner)
+  double from_s = 0.0;                     ///< s, start of the window the response is measured on
+  std::optional<double> to_s;              ///< s, end of the window (default: the end of the run)
+  std::optional<double> requested_frequency_hz;  ///< Hz, when no tuned joint states the request
+  std::optional<double> requested_damping_ratio;
+};
+
+enum class Metric {
+  frequency_error,        ///< |f_measured / f_requested - 1|
+  damping_ratio_error,    ///< |zeta_measured - zeta_requested|
+  measured_frequency_hz,
+  measured_damping_ratio,
+  overshoot,
+  settle_frames,          ///< a probe that never settles fails any bound on it
+  max_abs_value,          ///< max |value| over the window (blow-up: units of the probe)
+  max_constraint_error,   ///< m, scene-wide largest rigid-joint error
+  finite,                 ///< scene-wide: no NaN or infinity anywhere (bounds ignored)
+  in_world,               ///< scene-wide: every body stays inside world.bounds (bounds ignored)
+};
+
+struct Expectation {
+  std::string probe;                       ///< empty for scene-wide metrics
+  Metric metric = Metric::finite;
+  std::optional<double> min;
+  std::optional<double> max;
+  std::optional<MassModel> mass_model;     ///< checked on a run with this mass model (default: the scene's)
+  std::string note;                        ///< why the bound is what it is (shown by `softtune check`)
+};
+
+struct WorldSettings {
+  Eigen::Vector2d gravity{0, -10};         ///< m/s^2
+  double fps = 60.0;                       ///< Hz, frames per second
+  int substeps = 1;                        ///< b2World::Step calls per frame, each of 1 / (fps substeps) s
+  int velocity_iterations = 8;
+  int position_iterations = 3;
+  double duration_s = 5.0;                 ///< s
+  Eigen::Vector4d bounds{-1000, -1000, 1000, 1000};  ///< m, [x_min, y_min, x_max, y_max]: "the world"
+  bool allow_sleeping = false;             ///< off by default: a sleeping body would freeze a measurement
+};
+
+struct CameraSettings {
+  Eigen::Vector2d center{0, 0};            ///< m
+  double width_m = 20.0;                   ///< m of world across the picture
+};
+
+struct Scene {
+  std::string name;
+  std::string description;
+  WorldSettings world;
+  CameraSettings camera;
+  MassModel mass_model = MassModel::effective;
+  std::vector<BodySettings> bodies;
+  std::vector<JointSettings> joints;
+  std::vector<OscillatorSettings> oscillators;
+  std::vector<ProbeSettings> probes;
+  std::vector<Expectation> expectations;
+};
+
+/// Ranges and references (ids that exist, kinds that fit); the first violation with its dotted path
+/// ("joints.2.body_a"), or nothing. Designer fields are checked by validate_tune_request at run time.
+std::optional<FieldError> validate_scene(const Scene& scene);
+
+/// Number of frames a scene runs: round(duration_s fps).
+int frame_count(const WorldSettings& world);
+
+std::string_view joint_kind_name(JointKind k);
+std::string_view mass_model_name(MassModel m);
+std::string_view probe_kind_name(ProbeKind k);
+std::string_view metric_name(Metric m);
+
+}  // namespace softtune::scene

@@ -1,0 +1,93 @@
+#include "softtune/scene/joint_tuning.h"
+
+#include <cmath>
+
+#include "softtune/validation.h"
+
+namespace softtune::scene {
+namespace {
+
+Eigen::Vector2d unit_or(const Eigen::Vector2d& v, const Eigen::Vector2d& fallback) {
+  const double n = v.norm();
+  return n > 0.0 ? Eigen::Vector2d(v / n) : fallback;
+}
+
+// b2AngularStiffness (box2d v2.4.1 src/dynamics/b2_joint.cpp) uses IA IB / (IA + IB) from b2Body::GetInertia,
+// i.e. the same reduction as b2LinearStiffness, on rotational inertia.
+double reduced_angular_inertia(const Body2D& a, const Body2D& b) {
+  const bool static_a = a.is_static || !a.inertia, static_b = b.is_static || !b.inertia;
+  return box2d_reduced_mass(a.inertia.value_or(0.0), static_a, b.inertia.value_or(0.0), static_b);
+}
+
+}  // namespace
+
+Constraint2D joint_constraint(const JointSettings& j, const Body2D& body_a, const Body2D& body_b) {
+  Constraint2D c;
+  c.body_a = body_a;
+  c.body_b = body_b;
+  c.anchor_a = j.anchor_a;
+  c.anchor_b = j.anchor_b;
+  switch (j.kind) {
+    case JointKind::distance:
+      c.axis = unit_or(j.anchor_b - j.anchor_a, {0, 1});
+      break;
+    case JointKind::wheel:
+      // Box2D's lever for body A is d + rA = pB - cA: body B's anchor seen from A's centre.
+      c.anchor_a = j.anchor_b;
+      c.axis = unit_or(j.axis, {0, 1});
+      break;
+    case JointKind::mouse:
+      c.body_a = Body2D{};
+      c.body_a.is_static = true;
+      c.anchor_a = j.target;
+      c.axis = unit_or(j.target - j.anchor_b, {1, 0});
+      break;
+    case JointKind::weld:
+    case JointKind::revolute:
+      c.type = ConstraintType::angular;
+      break;
+  }
+  return c;
+}
+
+std::optional<FieldError> tune_joint(const JointSettings& j, const Constraint2D& c, const WorldSettings& world,
+                                     MassModel model, const std::string& path, JointTuning& out) {
+  out = JointTuning{};
+  out.joint = j.id;
+  out.mass_model = model;
+  out.angular = c.type == ConstraintType::angular;
+  const double k_inverse = inverse_effective_mass(c);
+  out.effective_mass = k_inverse > 0.0 ? 1.0 / k_inverse : 0.0;
+  out.box2d_reduced_mass = out.angular ? reduced_angular_inertia(c.body_a, c.body_b)
+                                       : box2d_reduced_mass(c.body_a.mass, c.body_a.is_static, c.body_b.mass, c.body_b.is_static);
+  if (!j.tuning) return std::nullopt;
+
+  out.tuned = true;
+  out.model_mass = model == MassModel::effective ? out.effective_mass : out.box2d_reduced_mass;
+  TuneRequest request = *j.tuning;
+  request.fps = world.fps;
+  request.substeps = world.substeps;
+  request.effective_mass = out.model_mass;
+  request.constraint.reset();
+  if (auto e = validate_tune_request(request)) {
+    // A rotation-locked or infinite-mass pair gives m = 0: name the joint's bodies, not an input field.
+    if (e->field == "effective_mass") return FieldError{path + ".body_b", "the joint's bodies give no usable mass: " + e->rule};
+    return FieldError{path + "." + e->field, e->rule};
+  }
+  out.result = tune(request);
+  out.requested_frequency_hz = requested_frequency_hz(request);
+  out.requested_damping_ratio = requested_damping_ratio(request);
+  SpringConstants spring = out.result.spring;
+  // Box2D 2.4 divides by h (c + h k); exact mode at zeta = 0 makes that 0, which Box2D reads as "rigid".
+  const double denominator = spring.damping + out.result.h * spring.stiffness;
+  if (!(denominator > 0.0) || !std::isfinite(denominator)) {
+    out.fell_back_to_standard = true;
+    spring = out.result.standard_spring;
+  }
+  out.stiffness = spring.stiffness;
+  out.damping = spring.damping;
+  out.predicted_frequency_hz = out.result.frequency_hz * std::sqrt(out.model_mass / out.effective_mass);
+  return std::nullopt;
+}
+
+}  // namespace softtune::scene

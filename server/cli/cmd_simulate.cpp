@@ -1,0 +1,51 @@
+// `softtune simulate`: run a preset or a full scene and print stages, per-probe response and series.
+#include <iostream>
+
+#include "cli/cli_io.h"
+#include "codec/preset_loader.h"
+#include "codec/problem.h"
+#include "codec/scene_codec.h"
+
+namespace softtune::cli {
+namespace {
+
+constexpr const char* kHelp = R"(softtune simulate: run a scene and measure the response it achieved.
+
+  softtune simulate --preset NAME     a preset from the presets directory
+  softtune simulate --request FILE    a full scene (JSON, - for stdin), or {"preset": NAME, ...}
+    --presets DIR        presets directory (default: $SOFTTUNE_PRESETS, else ./presets)
+    --mass-model M       effective (default) | box2d_reduced: the mass k, c are computed with
+    --frames             also record per-frame snapshots (bodies and joints in world coordinates)
+    --frame-stride N     record every N-th frame (default 1)
+
+Prints one JSON object: stages, joints (m_eff, k, c), probes (requested, measured, error, series).
+Bad input: exit code 2 and a problem JSON on stderr naming the field.
+)";
+
+}  // namespace
+
+int run_simulate(const Args& args) {
+  return guarded([&] {
+    const Flags flags = parse_flags(args, {"preset", "request", "presets", "mass-model", "frame-stride"}, {"frames", "help"});
+    if (flags.has("help")) {
+      std::cout << kHelp;
+      return kExitOk;
+    }
+    if (!flags.positional.empty()) throw codec::invalid_field(flags.positional.front(), "is not an argument of simulate (see --help)");
+    if (flags.has("preset") == flags.has("request")) throw codec::invalid_field("--preset", "give exactly one of --preset NAME and --request FILE");
+    nlohmann::json request;
+    if (auto name = flags.get("preset")) {
+      request = {{"preset", *name}};
+    } else {
+      request = read_request_file(*flags.get("request"));
+      if (!request.is_object()) throw codec::invalid_field("--request", "must hold a JSON object");
+    }
+    if (auto m = flags.get("mass-model")) request["mass_model"] = *m;
+    if (flags.has("frames")) request["frames"] = true;
+    if (flags.has("frame-stride")) request["frame_stride"] = flag_number(flags, "frame-stride");
+    print_json(codec::run_simulate(request, codec::resolve_presets_dir(flags.get("presets"))));
+    return kExitOk;
+  });
+}
+
+}  // namespace softtune::cli
