@@ -366,8 +366,13 @@ json run_simulate(const json& request) { return run_simulate(request, resolve_pr
 json presets_index(const std::string& presets_dir) {
   json list = json::array();
   for (const std::string& name : list_presets(presets_dir)) {
-    const json preset = load_preset(presets_dir, name);
-    list.push_back({{"name", name}, {"description", preset.value("description", "")}});
+    // One broken file must not hide the others: it is listed with the problem that refuses it.
+    try {
+      const json preset = load_preset(presets_dir, name);
+      list.push_back({{"name", name}, {"description", preset.value("description", "")}, {"valid", true}});
+    } catch (const Problem& p) {
+      list.push_back({{"name", name}, {"description", ""}, {"valid", false}, {"problem", problem_json(p)}});
+    }
   }
   return {{"presets", std::move(list)}};
 }

@@ -27,7 +27,8 @@ nlohmann::json run_simulate(const nlohmann::json& request, const std::string& pr
 /// The same with the presets directory from resolve_presets_dir().
 nlohmann::json run_simulate(const nlohmann::json& request);
 
-/// GET /api/v1/presets: {"presets": [{"name", "description"}]}.
+/// GET /api/v1/presets: {"presets": [{"name", "description", "valid", "problem"?}]}; a preset that fails its
+/// schema is listed with valid = false and the problem.
 nlohmann::json presets_index(const std::string& presets_dir);
 /// GET /api/v1/presets/{name}: the preset document itself.
 nlohmann::json preset_document(const std::string& presets_dir, const std::string& name);

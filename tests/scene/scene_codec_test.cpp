@@ -100,6 +100,10 @@ TEST(Presets, AnInvalidPresetIsRefusedWithFilePointerAndRule) {
     EXPECT_NE(p.detail.find("/world/fps must be >= 1"), std::string::npos);
   }
   EXPECT_THROW(load_preset(dir.string(), "../schema"), Problem);
+  const json index = presets_index(dir.string());
+  ASSERT_EQ(index["presets"].size(), 1u);
+  EXPECT_FALSE(index["presets"][0]["valid"].get<bool>());
+  EXPECT_EQ(index["presets"][0]["problem"]["field"], "/world/fps");
   try {
     load_preset(dir.string(), "absent");
   } catch (const Problem& p) {
