@@ -20,7 +20,8 @@ constexpr const char* kHelp = R"(softtune accuracy: error against run time for e
 constexpr const char* kHelpTail = R"(  report flags:
     --error-budget B    max position error as a fraction of the amplitude (default 0.05)
     --step-rates LIST   comma-separated fps values (default 30,60,120,240,480; the request's fps is added)
-    --duration S        simulated seconds (default and minimum: 3 periods)
+    --duration S        simulated seconds (minimum 3 periods; default 3 periods, or 8 frames of the
+                        lowest step rate when longer)
     --no-box2d          leave out the Box2D 2.4 distance joint row
     --format F          json (default) | csv | svg
 

@@ -306,7 +306,7 @@ Plot response_plot(const AccuracyRequest& q, const AccuracyReport& report) {
 
 Plot error_plot(const AccuracyRequest& q, const AccuracyReport& report) {
   const AccuracySettings& s = q.settings;
-  Plot p{"Error over time at " + format("%g fps", q.tune.fps) + " (|x - exact| / x0)", plot::make_axis("time", "s"),
+  Plot p{"Error over time at " + format("%g fps", q.tune.fps) + " (|x - exact| / x0; dashed: budget)", plot::make_axis("time", "s"),
          plot::make_axis("position error", "fraction of x0", Scale::log, 1e-8, 1e3), {}, {s.error_budget}};
   for (const AccuracyRow& row : report.rows) {
     if (!in_response(row, q)) continue;

@@ -28,7 +28,9 @@ void expect_problem(json request, const std::string& field) {
 
 // Every number in the document is finite (json cannot hold NaN, but nlohmann would store it as a float).
 void expect_all_finite(const json& j) {
-  if (j.is_number_float()) EXPECT_TRUE(std::isfinite(j.get<double>()));
+  if (j.is_number_float()) {
+    EXPECT_TRUE(std::isfinite(j.get<double>()));
+  }
   if (j.is_structured()) {
     for (const json& e : j) expect_all_finite(e);
   }

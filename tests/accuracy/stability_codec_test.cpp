@@ -33,7 +33,9 @@ TEST(StabilityCodec, CustomSweepHasEveryField) {
       EXPECT_TRUE(c.contains(key)) << key;
     }
     EXPECT_EQ(c.at("predicted_stable"), c.at("observed_stable"));
-    if (c.at("method") == "soft") EXPECT_TRUE(c.at("observed_stable").get<bool>());
+    if (c.at("method") == "soft") {
+      EXPECT_TRUE(c.at("observed_stable").get<bool>());
+    }
   }
   const json& chain = out.at("chain");
   EXPECT_EQ(chain.at("limits").size(), 2u * 2u * 2u);  // ratios x iterations x warm start

@@ -28,7 +28,9 @@ TEST(StabilitySweep, DefaultSweepPredictionEqualsObservation) {
                     << c.mass << " k " << c.stiffness << " h " << c.h << " rho " << c.spectral_radius;
     }
     ASSERT_TRUE(std::isfinite(c.spectral_radius));
-    if (c.observed_spectral_radius) ASSERT_TRUE(std::isfinite(*c.observed_spectral_radius));
+    if (c.observed_spectral_radius) {
+      ASSERT_TRUE(std::isfinite(*c.observed_spectral_radius));
+    }
   }
 }
 
