@@ -15,6 +15,8 @@ std::string_view stage_name(Stage s) {
     case Stage::exact_softness: return "exact_softness";
     case Stage::discrete_analysis: return "discrete_analysis";
     case Stage::engine_export: return "engine_export";
+    case Stage::render: return "render";
+    case Stage::png_encode: return "png_encode";
   }
   return "unknown";
 }

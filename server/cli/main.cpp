@@ -14,6 +14,7 @@ struct Command {
 
 constexpr Command kCommands[] = {
     {"tune", "designer request -> k, c, gamma, beta, ERP/CFM, engine export, stability", softtune::cli::run_tune},
+    {"render", "preview frames of a preset -> DIR/frame_0000.png ... and filmstrip.png", softtune::cli::run_render},
 };
 
 int usage(std::ostream& out, int code) {

@@ -37,6 +37,7 @@ struct TuneRequest {
 /// The stages a computation ran, in order; the response lists them so callers see what was left out.
 enum class Stage : std::uint8_t {
   validate, designer_mapping, effective_mass, softness, exact_softness, discrete_analysis, engine_export,
+  render, png_encode,
   // Later stages (scenes, rendering) extend this list.
 };
 std::string_view stage_name(Stage s);
