@@ -65,6 +65,13 @@ std::optional<FieldError> validate_preview_settings(const PreviewSettings& s) {
   return std::nullopt;
 }
 
+Camera run_camera(const FrameSet& set, ImageSize size) {
+  if (!set.camera.auto_fit) return set.camera;
+  Bounds all;
+  for (const DrawFrame& f : set.frames) all.add(bounds_of(f));
+  return fit_camera(all, static_cast<double>(size.width) / size.height);
+}
+
 std::size_t Preview::bytes() const {
   std::size_t n = sizeof(Preview) + id.size() + filmstrip_png.size();
   for (const std::string& f : frames_png) n += sizeof(std::string) + f.size();
@@ -180,11 +187,7 @@ std::shared_ptr<PreviewJob> FramePipeline::submit(std::string_view canonical_req
     job->complete(nullptr, e.what());
     throw;
   }
-  if (job->frames.camera.auto_fit) {
-    Bounds all;
-    for (const DrawFrame& f : job->frames.frames) all.add(bounds_of(f));
-    job->frames.camera = fit_camera(all, static_cast<double>(settings.size.width) / settings.size.height);
-  }
+  job->frames.camera = run_camera(job->frames, settings.size);
   job->filmstrip.emplace(filmstrip_layout(settings.frames, settings.filmstrip_every, settings.size));
   job->pngs.resize(settings.frames);
   {

@@ -76,8 +76,9 @@ DrawFrame oscillator_frame(const OscillatorScene& s, const OscillatorSample& sam
   f.polygons.push_back(box(0.0, shelf_top(s) - kShelfThickness, reach, shelf_top(s), Role::static_body));
 
   const double x_sim = oscillator_block_x(s, sample.simulated.x), x_exact = oscillator_block_x(s, sample.analytic.x);
+  // Where the block should be, under the simulated block: it shows only where the two differ.
+  f.polygons.push_back(block(x_exact, y_sim, Role::ghost));
   f.polygons.push_back(block(x_sim, y_sim, Role::probed));
-  f.polygons.push_back(block(x_exact, y_sim, Role::ghost));  // where the block should be
   f.polygons.push_back(block(x_exact, y_exact, Role::ghost));
   add_spring(f, s, x_sim, y_sim, false);
   add_spring(f, s, x_exact, y_exact, true);

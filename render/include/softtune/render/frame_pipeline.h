@@ -52,6 +52,9 @@ struct FrameSet {
   std::vector<DrawFrame> frames;
 };
 
+/// The one camera for a run: `set.camera` if fixed, else fitted to the bounds of every frame.
+Camera run_camera(const FrameSet& set, ImageSize size);
+
 struct PreviewTimings {
   double wall_ms = 0.0;       ///< submit to finished
   double prepare_ms = 0.0;    ///< the caller's make_frames (simulation and draw model)

@@ -1,0 +1,82 @@
+#include "softtune/render/tessellate.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "softtune/render/font.h"
+
+namespace softtune::render {
+namespace {
+
+View test_view() {
+  Camera c;
+  c.auto_fit = false;
+  c.width_m = 10.0;
+  return make_view(c, {640, 360});
+}
+
+TEST(GridStep, SmallestOneTwoFiveStepWideEnough) {
+  EXPECT_DOUBLE_EQ(grid_step_m(64.0, 36.0), 1.0);    // 0.5625 m wanted -> 1
+  EXPECT_DOUBLE_EQ(grid_step_m(100.0, 36.0), 0.5);   // 0.36 -> 0.5
+  EXPECT_DOUBLE_EQ(grid_step_m(36.0, 36.0), 1.0);    // exactly 1
+  EXPECT_DOUBLE_EQ(grid_step_m(10.0, 36.0), 5.0);    // 3.6 -> 5
+  EXPECT_DOUBLE_EQ(grid_step_m(1.0, 36.0), 50.0);
+  EXPECT_NEAR(grid_step_m(1000.0, 36.0), 0.05, 1e-15);
+}
+
+TEST(Tessellate, EveryVertexFiniteAndWholeTriangles) {
+  DrawFrame f;
+  f.ground_y_m = -1.0;
+  f.polygons.push_back({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, Role::dynamic_body});
+  f.circles.push_back({{2, 0}, 0.5, 0.3, Role::static_body});
+  f.springs.push_back({{-3, 0}, {0, 0}, 2.0, std::nullopt, false});
+  f.anchors.push_back({{-3, 0}, false});
+  f.labels.push_back({"A1", {0, 2}});
+  f.caption = "T 0.5 S\nLINE 2";
+  for (bool aa : {true, false}) {
+    Mesh m;
+    tessellate(f, test_view(), aa, m);
+    ASSERT_FALSE(m.vertices.empty());
+    EXPECT_EQ(m.vertices.size() % 3, 0u);
+    for (const Vertex& v : m.vertices) {
+      ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y));
+    }
+  }
+}
+
+TEST(Tessellate, DegenerateShapesAreSkippedNotCrashed) {
+  DrawFrame f;
+  f.polygons.push_back({{{0, 0}, {0, 0}, {0, 0}}, Role::dynamic_body});
+  f.polygons.push_back({{{std::nan(""), 0}, {1, 0}}, Role::dynamic_body});
+  f.springs.push_back({{0, 0}, {0, 0}, 0.0, std::nullopt, false});
+  Mesh m;
+  tessellate(f, test_view(), true, m);
+  for (const Vertex& v : m.vertices) ASSERT_TRUE(std::isfinite(v.x) && std::isfinite(v.y));
+}
+
+TEST(TessellateText, OneSquarePerLitDot) {
+  Mesh m;
+  tessellate_text("1", 10.0, 20.0, 2, palette::kText, m);
+  int lit = 0;
+  for (std::uint8_t row : glyph_rows('1')) {
+    for (int b = 0; b < kGlyphWidth; ++b) lit += (row >> b) & 1;
+  }
+  EXPECT_EQ(m.vertices.size(), static_cast<std::size_t>(lit) * 6);
+  // The glyph stays within its 5x7 cell of 2-pixel dots.
+  for (const Vertex& v : m.vertices) {
+    EXPECT_GE(v.x, 10.0f);
+    EXPECT_LE(v.x, 10.0f + kGlyphWidth * 2);
+    EXPECT_GE(v.y, 20.0f);
+    EXPECT_LE(v.y, 20.0f + kGlyphHeight * 2);
+  }
+}
+
+TEST(Font, LowerCaseIsUpperCaseAndUnknownIsQuestionMark) {
+  EXPECT_EQ(glyph_rows('a'), glyph_rows('A'));
+  EXPECT_EQ(glyph_rows('~'), glyph_rows('?'));
+  EXPECT_NE(glyph_rows('0'), glyph_rows('O'));
+}
+
+}  // namespace
+}  // namespace softtune::render
