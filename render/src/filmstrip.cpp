@@ -5,6 +5,7 @@
 
 #include "softtune/render/font.h"
 #include "softtune/render/palette.h"
+#include "softtune/render/text.h"
 
 namespace softtune::render {
 namespace {
@@ -69,20 +70,10 @@ void Filmstrip::place(int index, std::span<const std::uint8_t> rgba, ImageSize f
   }
   // The frame number, top-left, dark on white: one font dot per pixel.
   const std::string tag = std::to_string(index);
-  const int tag_w = static_cast<int>(tag.size()) * kGlyphAdvance + 3, tag_h = kGlyphHeight + 4;
+  const int tag_w = text_width_px(tag, 1) + 3, tag_h = kGlyphHeight + 4;
   if (tag_w > tw || tag_h > th) return;
   fill(pixels_, layout_.sheet.width, x0, y0, tag_w, tag_h, kTagBackground);
-  for (std::size_t i = 0; i < tag.size(); ++i) {
-    const auto rows = glyph_rows(tag[i]);
-    for (int r = 0; r < kGlyphHeight; ++r) {
-      for (int c = 0; c < kGlyphWidth; ++c) {
-        if (rows[r] & (0x10 >> c)) {
-          fill(pixels_, layout_.sheet.width, x0 + 2 + static_cast<int>(i) * kGlyphAdvance + c, y0 + 2 + r, 1, 1,
-               palette::kText);
-        }
-      }
-    }
-  }
+  blit_text(pixels_, layout_.sheet, tag, x0 + 2, y0 + 2, 1, palette::kText);
 }
 
 std::string Filmstrip::encode(PngOptions options) const { return encode_png(pixels_, layout_.sheet, options); }

@@ -68,7 +68,8 @@ class OsMesaRenderer final : public Renderer {
     }
     make_current();
     ensure_targets(size);
-    tessellate(frame, make_view(resolve_camera(camera, frame, size), size), options_.msaa_samples == 0, mesh_);
+    const View view = make_view(resolve_camera(camera, frame, size), size);
+    tessellate(frame, view, options_.msaa_samples == 0, mesh_);
 
     glBindFramebuffer(GL_FRAMEBUFFER, options_.msaa_samples > 0 ? msaa_fbo_ : resolve_fbo_);
     glViewport(0, 0, size.width, size.height);
@@ -92,6 +93,7 @@ class OsMesaRenderer final : public Renderer {
     if (const GLenum e = glGetError(); e != GL_NO_ERROR) {
       throw std::runtime_error("render: GL error " + std::to_string(e));
     }
+    draw_text_overlay(frame, view, rgba);
   }
 
  private:

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "softtune/render/font.h"
+#include "softtune/render/text.h"
 
 namespace softtune::render {
 namespace {
@@ -140,19 +141,19 @@ class Builder {
 
 P to_px(const View& v, Vec2 w) { return {v.px(w.x), v.py(w.y)}; }
 
-void draw_grid(Builder& b, const View& v, const StrokeSizes& s, double step) {
-  const double x0 = v.world_x(0.0), x1 = v.world_x(v.size.width);
-  const double y0 = v.world_y(v.size.height), y1 = v.world_y(0.0);
-  // Lines on pixel centres stay one pixel wide and sharp.
+// One-pixel rows and columns: exact pixel coverage, so no fringe is needed (and fewer triangles).
+void draw_grid(Builder& b, const View& v, double step) {
+  const double w = v.size.width, h = v.size.height;
+  const double x0 = v.world_x(0.0), x1 = v.world_x(w);
+  const double y0 = v.world_y(h), y1 = v.world_y(0.0);
   for (double k = std::ceil(x0 / step); k * step <= x1; k += 1.0) {
-    const double px = std::floor(v.px(k * step)) + 0.5;
-    b.stroke({{px, 0.0}, {px, static_cast<double>(v.size.height)}}, false, 1.0, palette::kGrid);
+    const double px = std::floor(v.px(k * step));
+    b.rect(px, 0.0, px + 1.0, h, palette::kGrid);
   }
   for (double k = std::ceil(y0 / step); k * step <= y1; k += 1.0) {
-    const double py = std::floor(v.py(k * step)) + 0.5;
-    b.stroke({{0.0, py}, {static_cast<double>(v.size.width), py}}, false, 1.0, palette::kGrid);
+    const double py = std::floor(v.py(k * step));
+    b.rect(0.0, py, w, py + 1.0, palette::kGrid);
   }
-  (void)s;
 }
 
 void draw_ground(Builder& b, const View& v, const StrokeSizes& s, double ground_y_m) {
@@ -241,35 +242,12 @@ double grid_step_m(double pixels_per_m, double min_spacing_px) {
   }
 }
 
-void tessellate_text(std::string_view text, double x, double y, int dot, Rgba colour, Mesh& out) {
-  Builder b(out, false);
-  x = std::round(x);
-  y = std::round(y);
-  const double left = x;
-  for (char c : text) {
-    if (c == '\n') {
-      x = left;
-      y += (kGlyphHeight + 4) * dot;
-      continue;
-    }
-    const auto rows = glyph_rows(c);
-    for (int r = 0; r < kGlyphHeight; ++r) {
-      for (int col = 0; col < kGlyphWidth; ++col) {
-        if (!(rows[r] & (0x10 >> col))) continue;
-        const double px = x + col * dot, py = y + r * dot;
-        b.rect(px, py, px + dot, py + dot, colour);
-      }
-    }
-    x += kGlyphAdvance * dot;
-  }
-}
-
 void tessellate(const DrawFrame& f, const View& v, bool fringe_aa, Mesh& out) {
   out.vertices.clear();
   Builder b(out, fringe_aa);
   const StrokeSizes s = stroke_sizes(v.size);
   const double step = grid_step_m(v.pixels_per_m, s.grid_min_spacing_px);
-  draw_grid(b, v, s, step);
+  draw_grid(b, v, step);
   if (f.ground_y_m) draw_ground(b, v, s, *f.ground_y_m);
   for (const PolygonShape& p : f.polygons) {
     const RoleColours rc = role_colours(p.role);
@@ -283,15 +261,19 @@ void tessellate(const DrawFrame& f, const View& v, bool fringe_aa, Mesh& out) {
     b.disc(to_px(v, a.at_m), s.anchor_radius_px,
            a.ghost ? with_alpha(palette::kAnchor, palette::kGhostAlpha / 255.0) : palette::kAnchor);
   }
+}
+
+void draw_text_overlay(const DrawFrame& f, const View& v, std::span<std::uint8_t> rgba) {
+  const StrokeSizes s = stroke_sizes(v.size);
   const int dot = s.text_dot_px;
   for (const Label& l : f.labels) {
-    tessellate_text(l.text, v.px(l.at_m.x), v.py(l.at_m.y) - kGlyphHeight * dot, dot, palette::kText, out);
+    blit_text(rgba, v.size, l.text, static_cast<int>(std::lround(v.px(l.at_m.x))),
+              static_cast<int>(std::lround(v.py(l.at_m.y))) - kGlyphHeight * dot, dot, palette::kText);
   }
-  const double margin = 4.0 * dot;
-  if (!f.caption.empty()) tessellate_text(f.caption, margin, margin, dot, palette::kText, out);
-  const std::string grid = grid_label(step);
-  tessellate_text(grid, v.size.width - margin - static_cast<double>(grid.size() * kGlyphAdvance * dot), margin, dot,
-                  palette::kText, out);
+  const int margin = 4 * dot;
+  if (!f.caption.empty()) blit_text(rgba, v.size, f.caption, margin, margin, dot, palette::kText);
+  const std::string grid = grid_label(grid_step_m(v.pixels_per_m, s.grid_min_spacing_px));
+  blit_text(rgba, v.size, grid, v.size.width - margin - text_width_px(grid, dot), margin, dot, palette::kText);
 }
 
 }  // namespace softtune::render

@@ -2,7 +2,8 @@
 // Draw model -> triangles in pixel space. No GL here: any backend (OSMesa today, EGL later) draws the
 // same mesh, and tests can check geometry without a context.
 
-#include <string_view>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "softtune/render/draw_model.h"
@@ -38,12 +39,13 @@ StrokeSizes stroke_sizes(ImageSize size);
 /// Grid step in metres: the smallest 1, 2, 5 x 10^k at least `min_spacing_px` apart on screen.
 double grid_step_m(double pixels_per_m, double min_spacing_px);
 
-/// Tessellates `frame` seen through `view`. With `fringe_aa` every edge gets a one-pixel alpha ramp
-/// (anti-aliasing without multisampling); without it edges are hard (for a multisampled target).
+/// Tessellates `frame` seen through `view`, all but its text. With `fringe_aa` every edge gets a
+/// one-pixel alpha ramp (anti-aliasing without multisampling); without it edges are hard (for a
+/// multisampled target).
 void tessellate(const DrawFrame& frame, const View& view, bool fringe_aa, Mesh& out);
 
-/// Appends `text` with its top-left corner at pixel (x, y), `dot` pixels per font dot; '\n' starts a
-/// new line.
-void tessellate_text(std::string_view text, double x, double y, int dot, Rgba colour, Mesh& out);
+/// The frame's text (labels, caption, grid step), drawn last on the read-back pixels: bitmap text costs
+/// a few thousand pixel writes on the CPU but two triangles per font dot on llvmpipe.
+void draw_text_overlay(const DrawFrame& frame, const View& view, std::span<std::uint8_t> rgba);
 
 }  // namespace softtune::render
