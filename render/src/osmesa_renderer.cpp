@@ -20,6 +20,10 @@ namespace {
 
 std::atomic<int> g_contexts_created{0};
 
+// Context creation and the first draw (which JIT-compiles llvmpipe's shader variants) touch Mesa's and
+// LLVM's process-wide state; they happen once per worker, so they are serialized.
+std::mutex g_setup_mutex;
+
 // Pixel positions map to NDC with y NOT flipped: pixel row 0 lands in GL row 0, which glReadPixels
 // returns first, so the read-back image is top-down without a copy.
 constexpr const char* kVertexShader = R"(#version 330 core
@@ -67,6 +71,11 @@ class OsMesaRenderer final : public Renderer {
       throw std::invalid_argument("render: the pixel buffer does not match the image size");
     }
     make_current();
+    draw(frame, camera, size, rgba);
+  }
+
+ private:
+  void draw(const DrawFrame& frame, const Camera& camera, ImageSize size, std::span<std::uint8_t> rgba) {
     ensure_targets(size);
     const View view = make_view(resolve_camera(camera, frame, size), size);
     tessellate(frame, view, options_.msaa_samples == 0, mesh_);
@@ -96,9 +105,12 @@ class OsMesaRenderer final : public Renderer {
     draw_text_overlay(frame, view, rgba);
   }
 
- private:
   void make_current() {
-    if (!context_) create_context();
+    if (!context_) {
+      std::lock_guard lock(g_setup_mutex);
+      create_context();
+      warm_up();
+    }
     if (OSMesaGetCurrentContext() != context_ &&
         !OSMesaMakeCurrent(context_, dummy_, GL_UNSIGNED_BYTE, 1, 1)) {
       throw std::runtime_error("render: OSMesaMakeCurrent failed");
@@ -145,6 +157,17 @@ class OsMesaRenderer final : public Renderer {
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  }
+
+  // One small frame so the shader variants exist before the first real frame runs unserialized.
+  void warm_up() {
+    constexpr ImageSize kTiny{16, 16};
+    std::uint8_t pixels[kTiny.width * kTiny.height * 4];
+    DrawFrame frame;
+    frame.polygons.push_back({{{-1.0, -1.0}, {1.0, -1.0}, {0.0, 1.0}}, Role::dynamic_body});
+    Camera camera;
+    camera.auto_fit = false;
+    draw(frame, camera, kTiny, pixels);
   }
 
   void ensure_targets(ImageSize size) {
