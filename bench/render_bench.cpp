@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <ctime>
 #include <string>
 #include <vector>
 
@@ -32,11 +33,19 @@ const FrameSet& frames() {
 
 std::vector<std::uint8_t> pixels() { return std::vector<std::uint8_t>(static_cast<std::size_t>(kSize.width) * kSize.height * 4); }
 
-// Per-frame floor times in ms, filled by the floor benchmarks that run first.
-double g_raster_ms = 0.0, g_png_ms = 0.0;
+// Per-frame floor times in ms (wall and CPU), filled by the floor benchmarks that run first.
+double g_raster_ms = 0.0, g_png_ms = 0.0, g_raster_cpu_ms = 0.0, g_png_cpu_ms = 0.0;
 
 double ms_per_item(Clock::time_point t0, benchmark::State& state) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count() / static_cast<double>(state.iterations());
+}
+
+// CPU time in ms of this thread or of the whole process (every worker): on a shared machine wall time
+// depends on the neighbours, CPU time much less.
+double cpu_ms(clockid_t clock) {
+  timespec ts{};
+  clock_gettime(clock, &ts);
+  return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
 }
 
 void raster(benchmark::State& state, int msaa) {
@@ -45,13 +54,16 @@ void raster(benchmark::State& state, int msaa) {
   r->render(frames().frames[0], frames().camera, kSize, px);  // context and shader JIT outside the timing
   int i = 0;
   const auto t0 = Clock::now();
+  const double c0 = cpu_ms(CLOCK_THREAD_CPUTIME_ID);
   for (auto _ : state) {
     r->render(frames().frames[i++ % kFrames], frames().camera, kSize, px);
     benchmark::DoNotOptimize(px.data());
   }
+  const double cpu = (cpu_ms(CLOCK_THREAD_CPUTIME_ID) - c0) / static_cast<double>(state.iterations());
   const double ms = ms_per_item(t0, state);
-  if (msaa == 0) g_raster_ms = ms;
+  if (msaa == 0) g_raster_ms = ms, g_raster_cpu_ms = cpu;
   state.counters["ms_per_frame"] = ms;
+  state.counters["cpu_ms_per_frame"] = cpu;
 }
 void BM_RasterOnly(benchmark::State& state) { raster(state, 0); }
 void BM_RasterOnly_Msaa4(benchmark::State& state) { raster(state, 4); }
@@ -75,22 +87,32 @@ void BM_PngOnly(benchmark::State& state) {
   std::size_t bytes = 0;
   int i = 0;
   const auto t0 = Clock::now();
+  const double c0 = cpu_ms(CLOCK_THREAD_CPUTIME_ID);
   for (auto _ : state) {
     const std::string png = encode_png(v[i++ % kFrames], kSize, o);
     bytes += png.size();
   }
+  const double cpu = (cpu_ms(CLOCK_THREAD_CPUTIME_ID) - c0) / static_cast<double>(state.iterations());
   const double ms = ms_per_item(t0, state);
-  if (o.level == 1 && o.filter == PngFilter::up) g_png_ms = ms;
+  if (o.level == 1 && o.filter == PngFilter::up) g_png_ms = ms, g_png_cpu_ms = cpu;
   state.counters["ms_per_frame"] = ms;
+  state.counters["cpu_ms_per_frame"] = cpu;
   state.counters["kB_per_frame"] = bytes / 1024.0 / static_cast<double>(state.iterations());
 }
 
-void report(benchmark::State& state, double ms_per_frame) {
-  const double floor = g_raster_ms + g_png_ms;
+// Wall: the pipeline's time per frame against the serial floor (raster + PNG per frame).
+// CPU: the pipeline's CPU per frame (all threads) against the floor's CPU: its overhead, whatever the
+// machine's load; 2000 / cpu_ms_per_frame is the rate two idle cores would reach.
+void report(benchmark::State& state, double ms_per_frame, double process_cpu_ms) {
+  const double floor = g_raster_ms + g_png_ms, floor_cpu = g_raster_cpu_ms + g_png_cpu_ms;
+  const double cpu = process_cpu_ms / (static_cast<double>(state.iterations()) * kFrames);
   state.counters["ms_per_frame"] = ms_per_frame;
   state.counters["frames_per_s"] = 1000.0 / ms_per_frame;
   state.counters["floor_ms"] = floor;
   state.counters["ratio_to_floor"] = floor > 0.0 ? ms_per_frame / floor : 0.0;
+  state.counters["cpu_ms_per_frame"] = cpu;
+  state.counters["cpu_ratio_to_floor"] = floor_cpu > 0.0 ? cpu / floor_cpu : 0.0;
+  state.counters["fps_on_2_idle_cores"] = 2000.0 / cpu;
 }
 
 // Warm pool (contexts exist), every request new: the service's usual cold render.
@@ -102,21 +124,23 @@ void BM_Pipeline120(benchmark::State& state) {
   p.submit("warm-up", s, [] { return frames(); })->wait();
   int n = 0;
   const auto t0 = Clock::now();
+  const double c0 = cpu_ms(CLOCK_PROCESS_CPUTIME_ID);
   for (auto _ : state) {
     benchmark::DoNotOptimize(p.submit("run " + std::to_string(n++), s, [] { return frames(); })->wait());
   }
-  report(state, ms_per_item(t0, state) / kFrames);
+  report(state, ms_per_item(t0, state) / kFrames, cpu_ms(CLOCK_PROCESS_CPUTIME_ID) - c0);
 }
 
 // A new pool per request: includes creating the GL contexts.
 void BM_Pipeline120_NewPool(benchmark::State& state) {
   PreviewSettings s{kFrames, kSize, 0};
   const auto t0 = Clock::now();
+  const double c0 = cpu_ms(CLOCK_PROCESS_CPUTIME_ID);
   for (auto _ : state) {
     FramePipeline p;
     benchmark::DoNotOptimize(p.submit("cold", s, [] { return frames(); })->wait());
   }
-  report(state, ms_per_item(t0, state) / kFrames);
+  report(state, ms_per_item(t0, state) / kFrames, cpu_ms(CLOCK_PROCESS_CPUTIME_ID) - c0);
 }
 
 void BM_CachedRepeat(benchmark::State& state) {
