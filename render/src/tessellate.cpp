@@ -273,7 +273,9 @@ void draw_text_overlay(const DrawFrame& f, const View& v, std::span<std::uint8_t
   const int margin = 4 * dot;
   if (!f.caption.empty()) blit_text(rgba, v.size, f.caption, margin, margin, dot, palette::kText);
   const std::string grid = grid_label(grid_step_m(v.pixels_per_m, s.grid_min_spacing_px));
-  blit_text(rgba, v.size, grid, v.size.width - margin - text_width_px(grid, dot), margin, dot, palette::kText);
+  // Bottom right: the caption owns the top and may be long.
+  blit_text(rgba, v.size, grid, v.size.width - margin - text_width_px(grid, dot),
+            v.size.height - margin - kGlyphHeight * dot, dot, palette::kText);
 }
 
 }  // namespace softtune::render
