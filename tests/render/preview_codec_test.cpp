@@ -110,6 +110,25 @@ TEST_F(RenderCommand, WritesFramesAndFilmstrip) {
   EXPECT_FALSE(std::filesystem::exists(dir / "frame_0005.png"));
 }
 
+TEST_F(RenderCommand, SameMotionSameIdWhicheverWayItIsAsked) {
+  // 30 frames per period on a 60 Hz basis is 2 Hz: the same physics, so the same content hash.
+  std::string a, b, c;
+  ASSERT_EQ(run({"--preset", "oscillator", "--frames", "2", "--size", "64x36", "--out", dir.string(),
+                 "--response-frames", "30"}, &a), 0);
+  const std::filesystem::path request = dir / "request.json";
+  std::ofstream(request) << R"({"frequency_hz": 2, "oscillation": "some", "effective_mass": 1})";
+  ASSERT_EQ(run({"--preset", "oscillator", "--frames", "2", "--size", "64x36", "--out", dir.string(),
+                 "--request", request.string()}, &b), 0);
+  ASSERT_EQ(run({"--preset", "oscillator", "--frames", "2", "--size", "64x36", "--out", dir.string(),
+                 "--response-frames", "31"}, &c), 0);
+  EXPECT_EQ(nlohmann::json::parse(a)["id"], nlohmann::json::parse(b)["id"]);
+  EXPECT_NE(nlohmann::json::parse(a)["id"], nlohmann::json::parse(c)["id"]);
+  std::string err;
+  EXPECT_EQ(run({"--preset", "oscillator", "--out", dir.string(), "--request", request.string(), "--mass", "2"},
+                nullptr, &err), 2);
+  EXPECT_NE(err.find("--request"), std::string::npos);
+}
+
 TEST_F(RenderCommand, RefusesWithAProblemNamingTheField) {
   std::string err;
   EXPECT_EQ(run({"--preset", "buddhas", "--out", dir.string()}, nullptr, &err), 2);
