@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/cli_io.h"
+#include "cli/flag_fields.h"
 #include "codec/json_reader.h"
 #include "codec/preview_codec.h"
 #include "codec/problem.h"
@@ -30,11 +31,7 @@ Presets: oscillator (the 1-D oscillator: soft method vs the exact analytic ghost
 Bad input: exit code 2 and a problem JSON on stderr naming the field.
 )";
 
-struct FlagField {
-  const char* flag;
-  const char* field;
-  bool numeric;
-};
+// The tune flags of `softtune tune`, with --response-frames for its --frames.
 constexpr FlagField kTuneFlags[] = {
     {"response-frames", "response_frames", true}, {"basis-fps", "basis_fps", true},
     {"frequency", "frequency_hz", true},          {"oscillation", "oscillation", false},
@@ -53,14 +50,7 @@ nlohmann::json tune_request_from(const Flags& flags) {
   nlohmann::json request = {{"effective_mass", 1.0}};
   if (!flags.has("frequency")) request["response_frames"] = 30.0;
   if (!flags.has("damping-ratio")) request["oscillation"] = "some";
-  for (const FlagField& f : kTuneFlags) {
-    if (!flags.has(f.flag)) continue;
-    if (f.numeric) {
-      request[f.field] = flag_number(flags, f.flag);
-    } else {
-      request[f.field] = *flags.get(f.flag);
-    }
-  }
+  set_fields_from_flags(flags, kTuneFlags, request);
   return request;
 }
 
@@ -74,8 +64,8 @@ void write_file(const std::filesystem::path& path, const std::string& bytes) {
 
 int run_render(const Args& args) {
   return guarded([&] {
-    std::vector<std::string> with_value = {"preset", "frames", "size", "filmstrip-every", "out", "request"};
-    for (const FlagField& f : kTuneFlags) with_value.emplace_back(f.flag);
+    std::vector<std::string> with_value = flag_names(kTuneFlags);
+    with_value.insert(with_value.end(), {"preset", "frames", "size", "filmstrip-every", "out", "request"});
     const Flags flags = parse_flags(args, with_value, {"help"});
     if (flags.has("help")) {
       std::cout << kHelp;

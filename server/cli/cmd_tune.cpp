@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/cli_io.h"
+#include "cli/flag_fields.h"
 #include "codec/problem.h"
 #include "codec/tune_codec.h"
 
@@ -25,12 +26,6 @@ constexpr const char* kHelp = R"(softtune tune: turn a designer's request into s
 Prints one JSON object. Bad input: exit code 2 and a problem JSON on stderr naming the field.
 )";
 
-// Flag -> request field; numbers become JSON numbers, the rest strings.
-struct FlagField {
-  const char* flag;
-  const char* field;
-  bool numeric;
-};
 constexpr FlagField kFlagFields[] = {
     {"frames", "response_frames", true}, {"basis-fps", "basis_fps", true}, {"frequency", "frequency_hz", true},
     {"oscillation", "oscillation", false}, {"damping-ratio", "damping_ratio", true}, {"mass", "effective_mass", true},
@@ -41,8 +36,8 @@ constexpr FlagField kFlagFields[] = {
 
 int run_tune(const Args& args) {
   return guarded([&] {
-    std::vector<std::string> with_value = {"request"};
-    for (const FlagField& f : kFlagFields) with_value.emplace_back(f.flag);
+    std::vector<std::string> with_value = flag_names(kFlagFields);
+    with_value.emplace_back("request");
     const Flags flags = parse_flags(args, with_value, {"help"});
     if (flags.has("help")) {
       std::cout << kHelp;
@@ -54,14 +49,7 @@ int run_tune(const Args& args) {
       request = read_request_file(*file);
     } else {
       request = nlohmann::json::object();
-      for (const FlagField& f : kFlagFields) {
-        if (!flags.has(f.flag)) continue;
-        if (f.numeric) {
-          request[f.field] = flag_number(flags, f.flag);
-        } else {
-          request[f.field] = *flags.get(f.flag);
-        }
-      }
+      set_fields_from_flags(flags, kFlagFields, request);
     }
     print_json(codec::run_tune(request));
     return kExitOk;
