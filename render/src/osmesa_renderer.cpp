@@ -108,8 +108,17 @@ class OsMesaRenderer final : public Renderer {
   void make_current() {
     if (!context_) {
       std::lock_guard lock(g_setup_mutex);
-      create_context();
-      warm_up();
+      try {
+        create_context();
+        warm_up();
+      } catch (...) {
+        // A half-made context must not be reused: the next frame tries again from scratch.
+        if (context_) OSMesaDestroyContext(context_);
+        context_ = nullptr;
+        program_ = vao_ = vbo_ = msaa_fbo_ = msaa_rb_ = resolve_fbo_ = resolve_rb_ = 0;
+        target_size_ = {0, 0};
+        throw;
+      }
     }
     if (OSMesaGetCurrentContext() != context_ &&
         !OSMesaMakeCurrent(context_, dummy_, GL_UNSIGNED_BYTE, 1, 1)) {
