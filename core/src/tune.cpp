@@ -27,6 +27,8 @@ std::string_view stage_name(Stage s) {
     case Stage::snapshots: return "snapshots";
     case Stage::response_fit: return "response_fit";
     case Stage::expectations: return "expectations";
+    case Stage::render: return "render";
+    case Stage::png_encode: return "png_encode";
   }
   return "unknown";
 }

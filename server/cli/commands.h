@@ -14,5 +14,6 @@ int run_accuracy(const Args& args);
 int run_stability(const Args& args);
 int run_simulate(const Args& args);
 int run_check(const Args& args);
+int run_render(const Args& args);
 
 }  // namespace softtune::cli

@@ -19,6 +19,7 @@ constexpr Command kCommands[] = {
     {"stability", "extreme-case sweep: predicted against observed stability, mass-ratio chain", softtune::cli::run_stability},
     {"simulate", "run a scene or preset in Box2D / the core integrators, measure the achieved response", softtune::cli::run_simulate},
     {"check", "run every preset's expectations (the automated preset test)", softtune::cli::run_check},
+    {"render", "preview frames of a preset -> DIR/frame_0000.png ... and filmstrip.png", softtune::cli::run_render},
 };
 
 int usage(std::ostream& out, int code) {

@@ -42,6 +42,8 @@ enum class Stage : std::uint8_t {
   scene_setup, core_integrator, box2d_world, box2d_step, snapshots, response_fit, expectations,
   // accuracy and stability
   accuracy_runs, box2d_distance_joint, recommendation, stability_sweep, sequential_impulse_chain,
+  // rendering
+  render, png_encode,
 };
 std::string_view stage_name(Stage s);
 

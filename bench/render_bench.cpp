@@ -1,0 +1,187 @@
+// Preview frames: the floor (raster only, PNG only, per frame) and the pipeline against it, in one run.
+// Goal (issue 6): 120 frames at 640x360 cold (not cached) within 1.5x the floor and >= 250 frames/s
+// with two workers; a cached repeat under 20 ms. Run with LP_NUM_THREADS=0/1/2 to compare llvmpipe
+// thread settings (README "Preview frames").
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include "softtune/render/frame_pipeline.h"
+#include "softtune/render/oscillator_frames.h"
+#include "softtune/render/png.h"
+#include "softtune/render/renderer.h"
+
+namespace {
+
+using namespace softtune::render;
+using Clock = std::chrono::steady_clock;
+
+constexpr int kFrames = 120;
+constexpr ImageSize kSize{640, 360};
+
+const FrameSet& frames() {
+  static const FrameSet set = [] {
+    FrameSet s = oscillator_frames(OscillatorScene{}, kFrames);
+    s.camera = run_camera(s, kSize);
+    return s;
+  }();
+  return set;
+}
+
+std::vector<std::uint8_t> pixels() { return std::vector<std::uint8_t>(static_cast<std::size_t>(kSize.width) * kSize.height * 4); }
+
+// Per-frame floor times in ms (wall and CPU), filled by the floor benchmarks that run first.
+double g_raster_ms = 0.0, g_png_ms = 0.0, g_raster_cpu_ms = 0.0, g_png_cpu_ms = 0.0;
+
+double ms_per_item(Clock::time_point t0, benchmark::State& state) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count() / static_cast<double>(state.iterations());
+}
+
+// CPU time in ms of the whole process (every worker and rasterizer thread): on a shared machine wall time
+// depends on the neighbours, CPU time much less.
+double cpu_ms(clockid_t clock) {
+  timespec ts{};
+  clock_gettime(clock, &ts);
+  return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+void raster(benchmark::State& state, int msaa) {
+  auto r = make_osmesa_renderer({.msaa_samples = msaa});
+  auto px = pixels();
+  r->render(frames().frames[0], frames().camera, kSize, px);  // context and shader JIT outside the timing
+  int i = 0;
+  const auto t0 = Clock::now();
+  const double c0 = cpu_ms(CLOCK_PROCESS_CPUTIME_ID);
+  for (auto _ : state) {
+    r->render(frames().frames[i++ % kFrames], frames().camera, kSize, px);
+    benchmark::DoNotOptimize(px.data());
+  }
+  const double cpu = (cpu_ms(CLOCK_PROCESS_CPUTIME_ID) - c0) / static_cast<double>(state.iterations());
+  const double ms = ms_per_item(t0, state);
+  if (msaa == 0) g_raster_ms = ms, g_raster_cpu_ms = cpu;
+  state.counters["ms_per_frame"] = ms;
+  state.counters["cpu_ms_per_frame"] = cpu;
+}
+void BM_RasterOnly(benchmark::State& state) { raster(state, 0); }
+void BM_RasterOnly_Msaa4(benchmark::State& state) { raster(state, 4); }
+
+const std::vector<std::vector<std::uint8_t>>& rendered() {
+  static const auto out = [] {
+    std::vector<std::vector<std::uint8_t>> v;
+    auto r = make_osmesa_renderer();
+    for (const DrawFrame& f : frames().frames) {
+      v.push_back(pixels());
+      r->render(f, frames().camera, kSize, v.back());
+    }
+    return v;
+  }();
+  return out;
+}
+
+void BM_PngOnly(benchmark::State& state) {
+  const PngOptions o{static_cast<int>(state.range(0)), static_cast<PngFilter>(state.range(1))};
+  const auto& v = rendered();
+  std::size_t bytes = 0;
+  int i = 0;
+  const auto t0 = Clock::now();
+  const double c0 = cpu_ms(CLOCK_PROCESS_CPUTIME_ID);
+  for (auto _ : state) {
+    const std::string png = encode_png(v[i++ % kFrames], kSize, o);
+    bytes += png.size();
+  }
+  const double cpu = (cpu_ms(CLOCK_PROCESS_CPUTIME_ID) - c0) / static_cast<double>(state.iterations());
+  const double ms = ms_per_item(t0, state);
+  if (o.level == 1 && o.filter == PngFilter::up) g_png_ms = ms, g_png_cpu_ms = cpu;
+  state.counters["ms_per_frame"] = ms;
+  state.counters["cpu_ms_per_frame"] = cpu;
+  state.counters["kB_per_frame"] = bytes / 1024.0 / static_cast<double>(state.iterations());
+}
+
+// Wall: the pipeline's time per frame against the serial floor (raster + PNG per frame).
+// CPU: the pipeline's CPU per frame (all threads) against the floor's CPU: its overhead, whatever the
+// machine's load; 2000 / cpu_ms_per_frame is the rate two idle cores would reach.
+void report(benchmark::State& state, double ms_per_frame, double process_cpu_ms) {
+  const double floor = g_raster_ms + g_png_ms, floor_cpu = g_raster_cpu_ms + g_png_cpu_ms;
+  const double cpu = process_cpu_ms / (static_cast<double>(state.iterations()) * kFrames);
+  state.counters["ms_per_frame"] = ms_per_frame;
+  state.counters["frames_per_s"] = 1000.0 / ms_per_frame;
+  state.counters["floor_ms"] = floor;
+  state.counters["ratio_to_floor"] = floor > 0.0 ? ms_per_frame / floor : 0.0;
+  state.counters["cpu_ms_per_frame"] = cpu;
+  state.counters["cpu_ratio_to_floor"] = floor_cpu > 0.0 ? cpu / floor_cpu : 0.0;
+  state.counters["fps_on_2_idle_cores"] = 2000.0 / cpu;
+}
+
+// Warm pool (contexts exist), every request new: the service's usual cold render.
+void BM_Pipeline120(benchmark::State& state) {
+  PipelineOptions o;
+  o.workers = static_cast<int>(state.range(0));
+  FramePipeline p(o);
+  PreviewSettings s{kFrames, kSize, 0};
+  p.submit("warm-up", s, [] { return frames(); })->wait();
+  int n = 0;
+  const auto t0 = Clock::now();
+  const double c0 = cpu_ms(CLOCK_PROCESS_CPUTIME_ID);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(p.submit("run " + std::to_string(n++), s, [] { return frames(); })->wait());
+  }
+  report(state, ms_per_item(t0, state) / kFrames, cpu_ms(CLOCK_PROCESS_CPUTIME_ID) - c0);
+}
+
+// A new pool per request: includes creating the GL contexts.
+void BM_Pipeline120_NewPool(benchmark::State& state) {
+  PreviewSettings s{kFrames, kSize, 0};
+  const auto t0 = Clock::now();
+  const double c0 = cpu_ms(CLOCK_PROCESS_CPUTIME_ID);
+  for (auto _ : state) {
+    FramePipeline p;
+    benchmark::DoNotOptimize(p.submit("cold", s, [] { return frames(); })->wait());
+  }
+  report(state, ms_per_item(t0, state) / kFrames, cpu_ms(CLOCK_PROCESS_CPUTIME_ID) - c0);
+}
+
+void BM_CachedRepeat(benchmark::State& state) {
+  FramePipeline p;
+  PreviewSettings s{kFrames, kSize, 0};
+  p.submit("repeat", s, [] { return frames(); })->wait();
+  const auto t0 = Clock::now();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(p.submit("repeat", s, [] { return frames(); })->wait());
+  }
+  state.counters["ms_per_request"] = ms_per_item(t0, state);
+}
+
+void BM_ContextCreation(benchmark::State& state) {
+  auto px = pixels();
+  DrawFrame empty;
+  for (auto _ : state) {
+    auto r = make_osmesa_renderer();
+    r->render(empty, frames().camera, kSize, px);  // the first frame creates the context
+  }
+}
+
+BENCHMARK(BM_RasterOnly)->Iterations(600)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RasterOnly_Msaa4)->Iterations(240)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PngOnly)
+    ->ArgNames({"level", "filter"})
+    ->Args({1, static_cast<int>(PngFilter::up)})
+    ->Args({1, static_cast<int>(PngFilter::none)})
+    ->Args({1, static_cast<int>(PngFilter::sub)})
+    ->Args({1, static_cast<int>(PngFilter::paeth)})
+    ->Args({1, static_cast<int>(PngFilter::all)})
+    ->Args({3, static_cast<int>(PngFilter::up)})
+    ->Args({6, static_cast<int>(PngFilter::up)})
+    ->Args({6, static_cast<int>(PngFilter::all)})
+    ->Iterations(240)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Pipeline120)->ArgName("workers")->Arg(1)->Arg(2)->Iterations(8)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Pipeline120_NewPool)->Iterations(4)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CachedRepeat)->Iterations(2000)->UseRealTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ContextCreation)->Iterations(10)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,40 @@
+#pragma once
+// The renderer interface: a frame (draw model) + camera + size -> RGBA pixels. Callers never see GL:
+// the OSMesa backend (osmesa_renderer.cpp, the one file that includes GL headers) can be replaced by an
+// EGL surfaceless one (Mesa 25.1 removed OSMesa) without touching them.
+
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "softtune/render/draw_model.h"
+#include "softtune/render/view.h"
+
+namespace softtune::render {
+
+struct RendererOptions {
+  /// 0: one-pixel alpha fringes on every edge (analytic anti-aliasing, single sample);
+  /// 4: 4x multisampling with hard edges. README "Preview frames" gives the measured costs.
+  int msaa_samples = 0;
+  /// llvmpipe rasterizer threads (LP_NUM_THREADS) when the environment does not set it: 0 rasterizes on
+  /// the calling thread, fastest with one render worker per core (README "Preview frames").
+  int llvmpipe_threads = 0;
+};
+
+/// Not thread-safe: one renderer per worker thread. The GL context is created on the first render()
+/// (6-20 ms) and kept for the renderer's life.
+class Renderer {
+ public:
+  virtual ~Renderer() = default;
+  /// Draws `frame` through `camera` (fitted to this frame's bounds when auto_fit) into `rgba`, which
+  /// holds size.width * size.height * 4 bytes: straight RGBA, row 0 at the top, alpha 255.
+  virtual void render(const DrawFrame& frame, const Camera& camera, ImageSize size, std::span<std::uint8_t> rgba) = 0;
+};
+
+/// The OSMesa (llvmpipe) backend. Creates no context until render() is called.
+std::unique_ptr<Renderer> make_osmesa_renderer(RendererOptions options = {});
+
+/// GL contexts this process has created so far: a request without frames must leave it unchanged.
+int gl_contexts_created();
+
+}  // namespace softtune::render

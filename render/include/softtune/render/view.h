@@ -1,0 +1,43 @@
+#pragma once
+// World (metres, y up) -> image pixels (x right, y down, origin at the top-left corner).
+
+#include "softtune/render/draw_model.h"
+
+namespace softtune::render {
+
+/// Image size in pixels.
+struct ImageSize {
+  int width = 640;
+  int height = 360;
+  bool operator==(const ImageSize&) const = default;
+};
+
+/// Fraction of the image height kept free at the top for the caption when a camera is fitted.
+inline constexpr double kCaptionBand = 0.16;
+
+/// A fixed camera that shows `bounds` with `margin` (fraction of the larger side) on every side and
+/// the caption band free above, at the image's aspect ratio; at least `min_width_m` wide so a point
+/// does not blow up.
+Camera fit_camera(const Bounds& bounds, double aspect, double margin = 0.06, double min_width_m = 0.5);
+
+/// The pixel mapping of a fixed camera for an image size:
+///   px = W/2 + (x - cx) s,  py = H/2 - (y - cy) s,  s = W / width_m (pixels per metre).
+struct View {
+  ImageSize size;
+  Vec2 centre_m;
+  double pixels_per_m = 64.0;
+
+  double px(double x_m) const { return 0.5 * size.width + (x_m - centre_m.x) * pixels_per_m; }
+  double py(double y_m) const { return 0.5 * size.height - (y_m - centre_m.y) * pixels_per_m; }
+  /// World y of pixel row py (the inverse of py()).
+  double world_y(double py_px) const { return centre_m.y + (0.5 * size.height - py_px) / pixels_per_m; }
+  double world_x(double px_px) const { return centre_m.x + (px_px - 0.5 * size.width) / pixels_per_m; }
+};
+
+/// The fixed camera a frame is drawn with: `camera` itself, or fitted to the frame's bounds.
+Camera resolve_camera(const Camera& camera, const DrawFrame& frame, ImageSize size);
+
+/// `camera` must be fixed (auto_fit false).
+View make_view(const Camera& camera, ImageSize size);
+
+}  // namespace softtune::render

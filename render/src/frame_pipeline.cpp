@@ -1,0 +1,282 @@
+#include "softtune/render/frame_pipeline.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "softtune/render/content_hash.h"
+
+namespace softtune::render {
+
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+}  // namespace
+
+/// Everything one request shares between the submitter, the workers and the waiters.
+struct JobState {
+  std::string id;
+  PreviewSettings settings;
+  Clock::time_point started = Clock::now();
+  bool from_cache = false;
+
+  // Filled before the first task is queued, then read-only until finish().
+  FrameSet frames;
+  std::optional<Filmstrip> filmstrip;
+  double prepare_ms = 0.0;
+  std::vector<std::string> pngs;  // each worker writes only its own frames' entries
+
+  std::atomic<int> done{0};
+  std::atomic<bool> failed{false};
+  std::atomic<std::int64_t> render_ns{0}, png_ns{0};
+
+  mutable std::mutex mutex;  // guards the fields below
+  mutable std::condition_variable cv;
+  bool finished = false;
+  std::string error;
+  std::shared_ptr<const Preview> result;
+
+  void complete(std::shared_ptr<const Preview> preview, std::string failure) {
+    {
+      std::lock_guard lock(mutex);
+      result = std::move(preview);
+      error = std::move(failure);
+      finished = true;
+    }
+    cv.notify_all();
+  }
+};
+
+std::optional<FieldError> validate_preview_settings(const PreviewSettings& s) {
+  if (s.frames < 1 || s.frames > caps::kMaxFrames) {
+    return FieldError{"frames", "must be an integer in [1, " + std::to_string(caps::kMaxFrames) + "]"};
+  }
+  if (s.size.width < caps::kMinSide || s.size.height < caps::kMinSide || s.size.width > caps::kMaxWidth ||
+      s.size.height > caps::kMaxHeight) {
+    return FieldError{"size", "must be WxH with " + std::to_string(caps::kMinSide) + " <= W <= " +
+                                  std::to_string(caps::kMaxWidth) + " and " + std::to_string(caps::kMinSide) +
+                                  " <= H <= " + std::to_string(caps::kMaxHeight) + " pixels"};
+  }
+  if (s.filmstrip_every < 0 || s.filmstrip_every > s.frames) {
+    return FieldError{"filmstrip_every", "must be 0 (automatic) or an integer in [1, frames]"};
+  }
+  return std::nullopt;
+}
+
+Camera run_camera(const FrameSet& set, ImageSize size) {
+  if (!set.camera.auto_fit) return set.camera;
+  Bounds all;
+  for (const DrawFrame& f : set.frames) all.add(bounds_of(f));
+  return fit_camera(all, static_cast<double>(size.width) / size.height);
+}
+
+std::size_t Preview::bytes() const {
+  std::size_t n = sizeof(Preview) + id.size() + filmstrip_png.size();
+  for (const std::string& f : frames_png) n += sizeof(std::string) + f.size();
+  return n;
+}
+
+const std::string& PreviewJob::id() const { return state_->id; }
+bool PreviewJob::from_cache() const { return state_->from_cache; }
+
+PreviewProgress PreviewJob::progress() const {
+  PreviewProgress p;
+  p.total = state_->settings.frames;
+  p.done = state_->done.load(std::memory_order_acquire);
+  std::lock_guard lock(state_->mutex);
+  p.finished = state_->finished;
+  p.failed = state_->finished && !state_->result;
+  if (p.finished && state_->result) p.done = p.total;
+  return p;
+}
+
+std::shared_ptr<const Preview> PreviewJob::wait() const {
+  std::unique_lock lock(state_->mutex);
+  state_->cv.wait(lock, [this] { return state_->finished; });
+  if (!state_->result) throw std::runtime_error("preview " + state_->id + " failed: " + state_->error);
+  return state_->result;
+}
+
+bool PreviewJob::wait_for(int timeout_ms) const {
+  std::unique_lock lock(state_->mutex);
+  return state_->cv.wait_for(lock, std::chrono::milliseconds(timeout_ms), [this] { return state_->finished; });
+}
+
+FramePipeline::FramePipeline(PipelineOptions options) : options_(std::move(options)), cache_(options_.cache_bytes) {
+  if (!options_.make_renderer) {
+    const RendererOptions ro = options_.renderer;
+    options_.make_renderer = [ro] { return make_osmesa_renderer(ro); };
+  }
+  const int n = std::max(1, options_.workers);
+  for (int i = 0; i < n; ++i) threads_.emplace_back([this] { worker_loop(); });
+}
+
+FramePipeline::~FramePipeline() {
+  {
+    std::lock_guard lock(queue_mutex_);
+    stopping_ = true;
+  }
+  queue_cv_.notify_all();
+  for (std::thread& t : threads_) t.join();
+}
+
+std::string FramePipeline::preview_id(std::string_view canonical_request, const PreviewSettings& s) {
+  // The renderer's look is part of the result: bump the version when the drawing changes.
+  constexpr std::string_view kRenderVersion = "softtune-preview-1";
+  std::string text;
+  text.reserve(canonical_request.size() + 96);
+  text.append(kRenderVersion).append("\n");
+  text.append(canonical_request).append("\nframes=").append(std::to_string(s.frames));
+  text.append(" size=").append(std::to_string(s.size.width)).append("x").append(std::to_string(s.size.height));
+  text.append(" filmstrip_every=").append(std::to_string(s.filmstrip_every));
+  return sha256_hex(text);
+}
+
+namespace {
+
+std::shared_ptr<PreviewJob> finished_job(std::shared_ptr<const Preview> preview) {
+  auto state = std::make_shared<JobState>();
+  state->id = preview->id;
+  state->settings = preview->settings;
+  state->from_cache = true;
+  state->complete(std::move(preview), "");
+  return std::make_shared<PreviewJob>(state);
+}
+
+}  // namespace
+
+std::shared_ptr<const Preview> FramePipeline::cached(const std::string& id) { return cache_.get(id); }
+
+std::shared_ptr<PreviewJob> FramePipeline::find(const std::string& id) {
+  std::lock_guard lock(jobs_mutex_);
+  if (auto it = in_flight_.find(id); it != in_flight_.end()) return std::make_shared<PreviewJob>(it->second);
+  auto preview = cache_.get(id);
+  return preview ? finished_job(std::move(preview)) : nullptr;
+}
+
+std::shared_ptr<PreviewJob> FramePipeline::submit(std::string_view canonical_request, const PreviewSettings& settings,
+                                                  const std::function<FrameSet()>& make_frames) {
+  if (auto e = validate_preview_settings(settings)) throw std::invalid_argument(e->field + " " + e->rule);
+  const std::string id = preview_id(canonical_request, settings);
+  std::shared_ptr<JobState> job;
+  {
+    // Looking in flight and in the cache under one lock: finish() caches before it leaves in_flight_.
+    std::lock_guard lock(jobs_mutex_);
+    if (auto it = in_flight_.find(id); it != in_flight_.end()) return std::make_shared<PreviewJob>(it->second);
+    if (auto preview = cache_.get(id)) return finished_job(std::move(preview));
+    job = std::make_shared<JobState>();
+    job->id = id;
+    job->settings = settings;
+    in_flight_[id] = job;
+  }
+  try {
+    const auto t0 = Clock::now();
+    job->frames = make_frames();
+    job->prepare_ms = ms_since(t0);
+    if (static_cast<int>(job->frames.frames.size()) != settings.frames) {
+      throw std::logic_error("preview: make_frames returned " + std::to_string(job->frames.frames.size()) +
+                             " frames, settings ask for " + std::to_string(settings.frames));
+    }
+  } catch (const std::exception& e) {
+    {
+      std::lock_guard lock(jobs_mutex_);
+      in_flight_.erase(id);
+    }
+    job->complete(nullptr, e.what());
+    throw;
+  }
+  job->frames.camera = run_camera(job->frames, settings.size);
+  job->filmstrip.emplace(filmstrip_layout(settings.frames, settings.filmstrip_every, settings.size));
+  job->pngs.resize(settings.frames);
+  {
+    std::lock_guard lock(queue_mutex_);
+    for (int i = 0; i < settings.frames; ++i) queue_.push_back({job, i});
+  }
+  queue_cv_.notify_all();
+  return std::make_shared<PreviewJob>(job);
+}
+
+void FramePipeline::worker_loop() {
+  // Created on this thread's first frame and kept: a GL context costs 6-20 ms to make.
+  std::unique_ptr<Renderer> renderer;
+  std::vector<std::uint8_t> pixels;
+  for (;;) {
+    Task task;
+    {
+      std::unique_lock lock(queue_mutex_);
+      queue_cv_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
+      if (queue_.empty()) return;
+      task = std::move(queue_.front());
+      queue_.pop_front();
+    }
+    run_task(task, renderer, pixels);
+  }
+}
+
+void FramePipeline::run_task(const Task& task, std::unique_ptr<Renderer>& renderer, std::vector<std::uint8_t>& pixels) {
+  JobState& job = *task.job;
+  if (!job.failed.load(std::memory_order_acquire)) {
+    try {
+      const ImageSize size = job.settings.size;
+      pixels.resize(static_cast<std::size_t>(size.width) * size.height * 4);
+      if (!renderer) renderer = options_.make_renderer();
+      const auto t0 = Clock::now();
+      renderer->render(job.frames.frames[task.index], job.frames.camera, size, pixels);
+      job.filmstrip->place(task.index, pixels, size);
+      const auto t1 = Clock::now();
+      job.pngs[task.index] = encode_png(pixels, size, options_.png);
+      const auto t2 = Clock::now();
+      job.render_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count());
+      job.png_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(t2 - t1).count());
+    } catch (const std::exception& e) {
+      std::lock_guard lock(job.mutex);
+      if (job.error.empty()) job.error = "frame " + std::to_string(task.index) + ": " + e.what();
+      job.failed.store(true, std::memory_order_release);
+    }
+  }
+  // The last frame's worker sees every other worker's writes (acq_rel) and finishes the job.
+  if (job.done.fetch_add(1, std::memory_order_acq_rel) + 1 == job.settings.frames) finish(job);
+}
+
+void FramePipeline::finish(JobState& job) {
+  std::shared_ptr<Preview> preview;
+  std::string error;
+  if (job.failed.load(std::memory_order_acquire)) {
+    std::lock_guard lock(job.mutex);
+    error = job.error;
+  } else {
+    try {
+      preview = std::make_shared<Preview>();
+      preview->id = job.id;
+      preview->settings = job.settings;
+      preview->filmstrip = job.filmstrip->layout();
+      preview->frames_png = std::move(job.pngs);
+      const auto t0 = Clock::now();
+      preview->filmstrip_png = job.filmstrip->encode(options_.png);
+      preview->stages.add(Stage::render);
+      preview->stages.add(Stage::png_encode);
+      PreviewTimings& t = preview->timings;
+      t.filmstrip_ms = ms_since(t0);
+      t.prepare_ms = job.prepare_ms;
+      t.render_ms = job.render_ns.load() * 1e-6;
+      t.png_ms = job.png_ns.load() * 1e-6;
+      t.workers = workers();
+      t.wall_ms = ms_since(job.started);
+      cache_.put(job.id, preview, preview->bytes());
+    } catch (const std::exception& e) {
+      preview.reset();
+      error = e.what();
+    }
+  }
+  job.frames = {};
+  job.filmstrip.reset();
+  {
+    std::lock_guard lock(jobs_mutex_);
+    in_flight_.erase(job.id);
+  }
+  job.complete(preview, error);
+}
+
+}  // namespace softtune::render

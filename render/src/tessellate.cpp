@@ -1,0 +1,281 @@
+#include "softtune/render/tessellate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "softtune/render/font.h"
+#include "softtune/render/text.h"
+
+namespace softtune::render {
+namespace {
+
+struct P {
+  double x, y;
+};
+P operator+(P a, P b) { return {a.x + b.x, a.y + b.y}; }
+P operator-(P a, P b) { return {a.x - b.x, a.y - b.y}; }
+P operator*(P a, double s) { return {a.x * s, a.y * s}; }
+double dot(P a, P b) { return a.x * b.x + a.y * b.y; }
+double norm(P a) { return std::sqrt(dot(a, a)); }
+P unit(P a) {
+  const double n = norm(a);
+  return n > 0.0 ? a * (1.0 / n) : P{0.0, 0.0};
+}
+P perp(P a) { return {-a.y, a.x}; }
+
+Rgba with_alpha(Rgba c, double scale) {
+  c.a = static_cast<std::uint8_t>(std::lround(std::clamp(c.a * scale, 0.0, 255.0)));
+  return c;
+}
+
+class Builder {
+ public:
+  Builder(Mesh& mesh, bool fringe) : mesh_(mesh), fringe_(fringe) {}
+
+  void tri(P a, Rgba ca, P b, Rgba cb, P c, Rgba cc) {
+    mesh_.vertices.push_back({static_cast<float>(a.x), static_cast<float>(a.y), ca});
+    mesh_.vertices.push_back({static_cast<float>(b.x), static_cast<float>(b.y), cb});
+    mesh_.vertices.push_back({static_cast<float>(c.x), static_cast<float>(c.y), cc});
+  }
+  // Quad a-b-c-d (in order around), a and b coloured ca, c and d coloured cd.
+  void quad(P a, P b, Rgba cab, P c, P d, Rgba ccd) {
+    tri(a, cab, b, cab, c, ccd);
+    tri(a, cab, c, ccd, d, ccd);
+  }
+  void rect(double x0, double y0, double x1, double y1, Rgba c) { quad({x0, y0}, {x1, y0}, c, {x1, y1}, {x0, y1}, c); }
+
+  // A convex polygon; with fringe, shrunk by half a pixel and ringed by a one-pixel alpha ramp.
+  void fill_convex(std::vector<P> pts, Rgba colour) {
+    dedupe(pts, true);
+    if (pts.size() < 3) return;
+    const std::vector<P> normals = vertex_normals(pts, true);
+    const double inset = fringe_ ? 0.5 : 0.0;
+    std::vector<P> inner(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) inner[i] = pts[i] - normals[i] * inset;
+    for (std::size_t i = 1; i + 1 < inner.size(); ++i) tri(inner[0], colour, inner[i], colour, inner[i + 1], colour);
+    if (!fringe_) return;
+    const Rgba clear = with_alpha(colour, 0.0);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const std::size_t j = (i + 1) % pts.size();
+      quad(inner[i], inner[j], colour, pts[j] + normals[j] * 0.5, pts[i] + normals[i] * 0.5, clear);
+    }
+  }
+
+  // A polyline `width_px` wide with mitred joins (mitres capped so sharp zig-zags stay bounded).
+  void stroke(std::vector<P> pts, bool closed, double width_px, Rgba colour) {
+    dedupe(pts, closed);
+    if (pts.size() < 2) return;
+    std::vector<P> normals = vertex_normals(pts, closed);
+    const double half = 0.5 * width_px;
+    const double core = fringe_ ? std::max(0.0, half - 0.5) : half;
+    // Lines thinner than a pixel fade instead of thinning below the pixel grid.
+    const Rgba c = fringe_ ? with_alpha(colour, std::min(1.0, width_px)) : colour;
+    const Rgba clear = with_alpha(colour, 0.0);
+    const std::size_t segments = closed ? pts.size() : pts.size() - 1;
+    for (std::size_t i = 0; i < segments; ++i) {
+      const std::size_t j = (i + 1) % pts.size();
+      const P a = pts[i], b = pts[j], na = normals[i], nb = normals[j];
+      quad(a + na * core, b + nb * core, c, b - nb * core, a - na * core, c);
+      if (!fringe_) continue;
+      quad(a + na * core, b + nb * core, c, b + nb * (half + 0.5), a + na * (half + 0.5), clear);
+      quad(a - na * core, b - nb * core, c, b - nb * (half + 0.5), a - na * (half + 0.5), clear);
+    }
+  }
+
+  void disc(P centre, double radius_px, Rgba colour) { fill_convex(circle_points(centre, radius_px), colour); }
+
+  static std::vector<P> circle_points(P centre, double radius_px) {
+    const int n = std::clamp(static_cast<int>(std::ceil(radius_px * 0.9)), 12, 128);
+    std::vector<P> pts(n);
+    for (int i = 0; i < n; ++i) {
+      const double a = 2.0 * std::numbers::pi * i / n;
+      pts[i] = {centre.x + radius_px * std::cos(a), centre.y + radius_px * std::sin(a)};
+    }
+    return pts;
+  }
+
+ private:
+  static void dedupe(std::vector<P>& pts, bool closed) {
+    std::vector<P> out;
+    out.reserve(pts.size());
+    for (const P& p : pts) {
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+      if (out.empty() || norm(p - out.back()) > 1e-4) out.push_back(p);
+    }
+    if (closed && out.size() > 1 && norm(out.front() - out.back()) <= 1e-4) out.pop_back();
+    pts = std::move(out);
+  }
+
+  // Unit offsets per vertex, pointing out of a closed convex polygon (or to the left of an open
+  // polyline), scaled to the mitre length 1 / cos(half the turn), capped at 4.
+  static std::vector<P> vertex_normals(const std::vector<P>& pts, bool closed) {
+    const std::size_t n = pts.size();
+    const std::size_t segments = closed ? n : n - 1;
+    std::vector<P> seg(segments);
+    for (std::size_t i = 0; i < segments; ++i) seg[i] = unit(perp(pts[(i + 1) % n] - pts[i]));
+    if (closed) {
+      // Point the normals outwards: the signed area tells the winding.
+      double area = 0.0;
+      for (std::size_t i = 0; i < n; ++i) area += pts[i].x * pts[(i + 1) % n].y - pts[(i + 1) % n].x * pts[i].y;
+      if (area > 0.0) {
+        for (P& s : seg) s = s * -1.0;
+      }
+    }
+    std::vector<P> out(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool has_prev = closed || i > 0, has_next = closed || i < segments;
+      const P prev = has_prev ? seg[(i + segments - 1) % segments] : seg[i];
+      const P next = has_next ? seg[i % segments] : prev;
+      const P mid = unit(prev + next);
+      const double c = dot(mid, next);
+      out[i] = c > 0.25 ? mid * (1.0 / c) : (c > 0.0 ? mid * 4.0 : next);
+    }
+    return out;
+  }
+
+  Mesh& mesh_;
+  bool fringe_;
+};
+
+P to_px(const View& v, Vec2 w) { return {v.px(w.x), v.py(w.y)}; }
+
+// One-pixel rows and columns: exact pixel coverage, so no fringe is needed (and fewer triangles).
+void draw_grid(Builder& b, const View& v, double step) {
+  const double w = v.size.width, h = v.size.height;
+  const double x0 = v.world_x(0.0), x1 = v.world_x(w);
+  const double y0 = v.world_y(h), y1 = v.world_y(0.0);
+  for (double k = std::ceil(x0 / step); k * step <= x1; k += 1.0) {
+    const double px = std::floor(v.px(k * step));
+    b.rect(px, 0.0, px + 1.0, h, palette::kGrid);
+  }
+  for (double k = std::ceil(y0 / step); k * step <= y1; k += 1.0) {
+    const double py = std::floor(v.py(k * step));
+    b.rect(0.0, py, w, py + 1.0, palette::kGrid);
+  }
+}
+
+void draw_ground(Builder& b, const View& v, const StrokeSizes& s, double ground_y_m) {
+  const double py = v.py(ground_y_m);
+  const double w = v.size.width, h = v.size.height;
+  if (py < h) b.rect(0.0, std::max(0.0, py), w, h, palette::kEarth);
+  b.stroke({{-1.0, py}, {w + 1.0, py}}, false, s.ground_px, palette::kGroundLine);
+}
+
+std::vector<P> polygon_px(const View& v, const PolygonShape& p) {
+  std::vector<P> pts;
+  pts.reserve(p.vertices_m.size());
+  for (Vec2 w : p.vertices_m) pts.push_back(to_px(v, w));
+  return pts;
+}
+
+void draw_circle(Builder& b, const View& v, const StrokeSizes& s, const CircleShape& c) {
+  const RoleColours rc = role_colours(c.role);
+  const P centre = to_px(v, c.centre_m);
+  const double r = c.radius_m * v.pixels_per_m;
+  b.disc(centre, r, rc.fill);
+  b.stroke(Builder::circle_points(centre, r), true, s.outline_px, rc.outline);
+  // World angle is counter-clockwise with y up; pixels have y down.
+  const P rim = centre + P{std::cos(c.angle_rad), -std::sin(c.angle_rad)} * r;
+  b.stroke({centre, rim}, false, s.outline_px, rc.outline);
+}
+
+// A zig-zag with straight leads at both ends; its amplitude follows the rest length (clamped to stay
+// readable) so the coils visibly bunch up under compression.
+void draw_spring(Builder& b, const View& v, const StrokeSizes& s, const SpringShape& sp) {
+  const P a = to_px(v, sp.a_m), e = to_px(v, sp.b_m);
+  const double length_px = norm(e - a);
+  const double current_m = sp.current_length_m ? *sp.current_length_m
+                                               : std::hypot(sp.b_m.x - sp.a_m.x, sp.b_m.y - sp.a_m.y);
+  Rgba colour = spring_colour(current_m, sp.rest_length_m);
+  if (sp.ghost) colour = with_alpha(colour, palette::kGhostAlpha / 255.0);
+  if (length_px < 4.0) {
+    b.stroke({a, e}, false, s.spring_px, colour);
+    return;
+  }
+  const double scale = v.size.height / 360.0;
+  const double reference_m = sp.rest_length_m > 0.0 ? sp.rest_length_m : current_m;
+  const double amplitude = std::clamp(0.07 * reference_m * v.pixels_per_m, 3.0 * scale, 10.0 * scale);
+  const P dir = (e - a) * (1.0 / length_px), side = perp(dir);
+  const double lead = 0.12 * length_px;
+  constexpr int kZigs = 12;
+  std::vector<P> pts{a, a + dir * lead};
+  for (int i = 0; i < kZigs; ++i) {
+    const double t = lead + (length_px - 2.0 * lead) * (i + 0.5) / kZigs;
+    pts.push_back(a + dir * t + side * (i % 2 == 0 ? amplitude : -amplitude));
+  }
+  pts.push_back(e - dir * lead);
+  pts.push_back(e);
+  b.stroke(std::move(pts), false, s.spring_px, colour);
+}
+
+std::string grid_label(double step) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "GRID %g M", step);
+  return buf;
+}
+
+}  // namespace
+
+StrokeSizes stroke_sizes(ImageSize size) {
+  const double s = std::max(0.5, size.height / 360.0);
+  return {
+      .outline_px = 2.0 * s,
+      .spring_px = 2.0 * s,
+      .ground_px = 2.0 * s,
+      .anchor_radius_px = 3.5 * s,
+      .text_dot_px = std::max(1, static_cast<int>(std::lround(size.height / 200.0))),
+      .grid_min_spacing_px = 36.0 * s,
+  };
+}
+
+double grid_step_m(double pixels_per_m, double min_spacing_px) {
+  if (!(pixels_per_m > 0.0)) return 1.0;
+  const double want = min_spacing_px / pixels_per_m;
+  double decade = std::pow(10.0, std::floor(std::log10(want)));
+  for (;;) {
+    for (double m : {1.0, 2.0, 5.0}) {
+      if (m * decade >= want * (1.0 - 1e-12)) return m * decade;
+    }
+    decade *= 10.0;
+  }
+}
+
+void tessellate(const DrawFrame& f, const View& v, bool fringe_aa, Mesh& out) {
+  out.vertices.clear();
+  Builder b(out, fringe_aa);
+  const StrokeSizes s = stroke_sizes(v.size);
+  const double step = grid_step_m(v.pixels_per_m, s.grid_min_spacing_px);
+  draw_grid(b, v, step);
+  if (f.ground_y_m) draw_ground(b, v, s, *f.ground_y_m);
+  for (const PolygonShape& p : f.polygons) {
+    const RoleColours rc = role_colours(p.role);
+    std::vector<P> pts = polygon_px(v, p);
+    b.fill_convex(pts, rc.fill);
+    b.stroke(std::move(pts), true, s.outline_px, rc.outline);
+  }
+  for (const CircleShape& c : f.circles) draw_circle(b, v, s, c);
+  for (const SpringShape& sp : f.springs) draw_spring(b, v, s, sp);
+  for (const AnchorDot& a : f.anchors) {
+    b.disc(to_px(v, a.at_m), s.anchor_radius_px,
+           a.ghost ? with_alpha(palette::kAnchor, palette::kGhostAlpha / 255.0) : palette::kAnchor);
+  }
+}
+
+void draw_text_overlay(const DrawFrame& f, const View& v, std::span<std::uint8_t> rgba) {
+  const StrokeSizes s = stroke_sizes(v.size);
+  const int dot = s.text_dot_px;
+  for (const Label& l : f.labels) {
+    blit_text(rgba, v.size, l.text, static_cast<int>(std::lround(v.px(l.at_m.x))),
+              static_cast<int>(std::lround(v.py(l.at_m.y))) - kGlyphHeight * dot, dot, palette::kText);
+  }
+  const int margin = 4 * dot;
+  if (!f.caption.empty()) blit_text(rgba, v.size, f.caption, margin, margin, dot, palette::kText);
+  const std::string grid = grid_label(grid_step_m(v.pixels_per_m, s.grid_min_spacing_px));
+  // Bottom right: the caption owns the top and may be long.
+  blit_text(rgba, v.size, grid, v.size.width - margin - text_width_px(grid, dot),
+            v.size.height - margin - kGlyphHeight * dot, dot, palette::kText);
+}
+
+}  // namespace softtune::render

@@ -1,0 +1,251 @@
+// The render pool: caps, content-hash naming, the cache, progress, failures, concurrency, and that no
+// GL context exists until frames are asked for. Also built under ThreadSanitizer (README).
+#include "softtune/render/frame_pipeline.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+#include "png_decode.h"
+#include "softtune/render/palette.h"
+#include "softtune/render/oscillator_frames.h"
+
+namespace softtune::render {
+namespace {
+
+PreviewSettings small(int frames) {
+  PreviewSettings s;
+  s.frames = frames;
+  s.size = {160, 90};
+  return s;
+}
+
+// A box sliding right by 0.1 m per frame.
+FrameSet sliding_box(int frames) {
+  FrameSet set;
+  set.camera.auto_fit = false;
+  set.camera.width_m = 8.0;
+  for (int k = 0; k < frames; ++k) {
+    const double x = -2.0 + 0.1 * k;
+    DrawFrame f;
+    f.polygons.push_back({{{x - 0.5, -0.5}, {x + 0.5, -0.5}, {x + 0.5, 0.5}, {x - 0.5, 0.5}}, Role::dynamic_body});
+    set.frames.push_back(std::move(f));
+  }
+  return set;
+}
+
+// A renderer without GL: fills the image with a grey that encodes the box position; throws on a frame
+// captioned "fail" while `failing` is set.
+class FakeRenderer final : public Renderer {
+ public:
+  explicit FakeRenderer(std::atomic<bool>* failing) : failing_(failing) {}
+  void render(const DrawFrame& frame, const Camera&, ImageSize, std::span<std::uint8_t> rgba) override {
+    if (failing_ && failing_->load() && frame.caption == "fail") throw std::runtime_error("injected failure");
+    const int v = frame.polygons.empty() ? 0 : static_cast<int>(std::lround(100 + 10 * frame.polygons[0].vertices_m[0].x));
+    for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = (i % 4 == 3) ? 255 : static_cast<std::uint8_t>(v);
+  }
+
+ private:
+  std::atomic<bool>* failing_;
+};
+
+PipelineOptions fake_options(std::atomic<bool>* failing = nullptr) {
+  PipelineOptions o;
+  o.make_renderer = [failing] { return std::make_unique<FakeRenderer>(failing); };
+  return o;
+}
+
+TEST(PreviewSettings, CapsNameTheField) {
+  EXPECT_FALSE(validate_preview_settings({}));
+  EXPECT_FALSE(validate_preview_settings({caps::kMaxFrames, {caps::kMaxWidth, caps::kMaxHeight}, 0}));
+  EXPECT_EQ(validate_preview_settings({0, {640, 360}, 0})->field, "frames");
+  EXPECT_EQ(validate_preview_settings({caps::kMaxFrames + 1, {640, 360}, 0})->field, "frames");
+  EXPECT_EQ(validate_preview_settings({60, {caps::kMaxWidth + 1, 360}, 0})->field, "size");
+  EXPECT_EQ(validate_preview_settings({60, {640, caps::kMaxHeight + 1}, 0})->field, "size");
+  EXPECT_EQ(validate_preview_settings({60, {caps::kMinSide - 1, 360}, 0})->field, "size");
+  EXPECT_EQ(validate_preview_settings({60, {640, 360}, 61})->field, "filmstrip_every");
+  EXPECT_EQ(validate_preview_settings({60, {640, 360}, -1})->field, "filmstrip_every");
+  const auto e = validate_preview_settings({601, {640, 360}, 0});
+  EXPECT_NE(e->rule.find("600"), std::string::npos);
+}
+
+TEST(FramePipeline, RefusesSettingsAboveTheCapsBeforeMakingFrames) {
+  FramePipeline p(fake_options());
+  bool called = false;
+  EXPECT_THROW(p.submit("x", {601, {640, 360}, 0}, [&] { called = true; return FrameSet{}; }), std::invalid_argument);
+  EXPECT_THROW(p.submit("x", {60, {3840, 2160}, 0}, [&] { called = true; return FrameSet{}; }), std::invalid_argument);
+  EXPECT_FALSE(called);
+}
+
+TEST(FramePipeline, NoGlContextUnlessFramesAreRequested) {
+  const int before = gl_contexts_created();
+  {
+    FramePipeline p;  // the OSMesa backend, workers running
+    // A caller that simulates and looks up previews but asks for no frames.
+    const FrameSet set = oscillator_frames(OscillatorScene{}, 30);
+    EXPECT_EQ(set.frames.size(), 30u);
+    EXPECT_FALSE(p.cached(FramePipeline::preview_id("oscillator", small(30))));
+    EXPECT_FALSE(p.find("no-such-id"));
+    EXPECT_THROW(p.submit("x", small(0), [] { return FrameSet{}; }), std::invalid_argument);
+  }
+  EXPECT_EQ(gl_contexts_created(), before);
+
+  // Frames requested: at most one context per worker, and a cached repeat creates none.
+  FramePipeline p;
+  p.submit("box", small(8), [] { return sliding_box(8); })->wait();
+  const int after_first = gl_contexts_created();
+  EXPECT_GE(after_first, before + 1);
+  EXPECT_LE(after_first, before + p.workers());
+  EXPECT_TRUE(p.submit("box", small(8), [] { return sliding_box(8); })->from_cache());
+  EXPECT_EQ(gl_contexts_created(), after_first);
+}
+
+TEST(FramePipeline, FramesDifferWhileTheSceneMovesAndRepeatExactly) {
+  FramePipeline a, b;  // separate caches: the repeat really renders again
+  const auto pa = a.submit("box", small(6), [] { return sliding_box(6); })->wait();
+  const auto pb = b.submit("box", small(6), [] { return sliding_box(6); })->wait();
+  ASSERT_EQ(pa->frames_png.size(), 6u);
+  EXPECT_EQ(pa->id, pb->id);
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_EQ(pa->frames_png[k], pb->frames_png[k]) << "frame " << k;
+    if (k > 0) {
+      EXPECT_NE(pa->frames_png[k], pa->frames_png[k - 1]) << "frame " << k;
+    }
+  }
+  EXPECT_EQ(pa->filmstrip_png, pb->filmstrip_png);
+  // The box is at its projected position in every frame.
+  const View v = make_view(sliding_box(1).camera, {160, 90});
+  for (int k = 0; k < 6; ++k) {
+    const test::Decoded d = test::decode_png(pa->frames_png[k]);
+    const std::uint8_t* p = d.at(static_cast<int>(v.px(-2.0 + 0.1 * k)), static_cast<int>(v.py(0.0)));
+    EXPECT_EQ(p[0], role_colours(Role::dynamic_body).fill.r) << "frame " << k;
+    EXPECT_EQ(p[2], role_colours(Role::dynamic_body).fill.b) << "frame " << k;
+  }
+  EXPECT_TRUE(pa->stages.contains(Stage::render));
+  EXPECT_TRUE(pa->stages.contains(Stage::png_encode));
+}
+
+TEST(FramePipeline, IdDependsOnRequestAndSettings) {
+  const std::string base = FramePipeline::preview_id("req", small(10));
+  EXPECT_EQ(base.size(), 64u);
+  EXPECT_EQ(base, FramePipeline::preview_id("req", small(10)));
+  EXPECT_NE(base, FramePipeline::preview_id("req2", small(10)));
+  EXPECT_NE(base, FramePipeline::preview_id("req", small(11)));
+  PreviewSettings other = small(10);
+  other.size = {161, 90};
+  EXPECT_NE(base, FramePipeline::preview_id("req", other));
+  other = small(10);
+  other.filmstrip_every = 2;
+  EXPECT_NE(base, FramePipeline::preview_id("req", other));
+}
+
+TEST(FramePipeline, CacheServesRepeatsWithoutMakingFrames) {
+  FramePipeline p(fake_options());
+  std::atomic<int> made{0};
+  auto make = [&] { ++made; return sliding_box(5); };
+  const auto first = p.submit("r", small(5), make);
+  EXPECT_FALSE(first->from_cache());
+  const auto preview = first->wait();
+  const auto again = p.submit("r", small(5), make);
+  EXPECT_TRUE(again->from_cache());
+  EXPECT_EQ(again->wait(), preview);
+  EXPECT_EQ(made.load(), 1);
+  EXPECT_EQ(p.cached(preview->id), preview);
+  EXPECT_EQ(p.find(preview->id)->wait(), preview);
+  const CacheStats s = p.cache_stats();
+  EXPECT_EQ(s.entries, 1u);
+  EXPECT_EQ(s.bytes, preview->bytes());
+}
+
+TEST(FramePipeline, CacheIsBoundedByBytes) {
+  PipelineOptions o = fake_options();
+  FramePipeline probe(fake_options());
+  const std::size_t one = probe.submit("r0", small(5), [] { return sliding_box(5); })->wait()->bytes();
+  o.cache_bytes = one * 2 + one / 2;  // room for two
+  FramePipeline p(o);
+  for (int i = 0; i < 4; ++i) p.submit("r" + std::to_string(i), small(5), [] { return sliding_box(5); })->wait();
+  const CacheStats s = p.cache_stats();
+  EXPECT_EQ(s.entries, 2u);
+  EXPECT_LE(s.bytes, o.cache_bytes);
+  EXPECT_EQ(s.evictions, 2u);
+  EXPECT_FALSE(p.cached(FramePipeline::preview_id("r0", small(5))));
+  EXPECT_TRUE(p.cached(FramePipeline::preview_id("r3", small(5))));
+}
+
+TEST(FramePipeline, ProgressReachesTheTotal) {
+  FramePipeline p;
+  const auto job = p.submit("box", small(20), [] { return sliding_box(20); });
+  int last = 0;
+  while (!job->wait_for(1)) {
+    const PreviewProgress pr = job->progress();
+    EXPECT_GE(pr.done, last);
+    EXPECT_LE(pr.done, 20);
+    EXPECT_EQ(pr.total, 20);
+    last = pr.done;
+  }
+  const PreviewProgress done = job->progress();
+  EXPECT_TRUE(done.finished);
+  EXPECT_FALSE(done.failed);
+  EXPECT_EQ(done.done, 20);
+}
+
+TEST(FramePipeline, AFailedFrameFailsTheJobAndIsNotCached) {
+  std::atomic<bool> failing{true};
+  FramePipeline p(fake_options(&failing));
+  auto make = [] {
+    FrameSet set = sliding_box(8);
+    set.frames[3].caption = "fail";
+    return set;
+  };
+  const auto job = p.submit("r", small(8), make);
+  try {
+    job->wait();
+    ADD_FAILURE() << "a failed frame must fail the job";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("frame 3"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(job->progress().failed);
+  EXPECT_FALSE(p.cached(job->id()));
+  failing = false;
+  std::atomic<int> made{0};
+  EXPECT_FALSE(p.submit("r", small(8), [&] { ++made; return make(); })->wait()->frames_png.empty());
+  EXPECT_EQ(made.load(), 1);  // rendered again, not served from a cache
+}
+
+TEST(FramePipeline, MakeFramesErrorsReachTheCaller) {
+  FramePipeline p(fake_options());
+  EXPECT_THROW(p.submit("r", small(8), [] { return sliding_box(7); }), std::logic_error);
+  EXPECT_THROW(p.submit("r", small(8), []() -> FrameSet { throw std::runtime_error("bad scene"); }),
+               std::runtime_error);
+  EXPECT_NO_THROW(p.submit("r", small(8), [] { return sliding_box(8); })->wait());
+}
+
+TEST(FramePipeline, ConcurrentIdenticalRequestsShareOneRender) {
+  FramePipeline p;
+  std::atomic<int> made{0};
+  std::vector<std::shared_ptr<const Preview>> results(4);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t) {
+    threads.emplace_back([&, t] {
+      results[t] = p.submit("same", small(12), [&] { ++made; return sliding_box(12); })->wait();
+    });
+  }
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(made.load(), 1);
+  for (const auto& r : results) EXPECT_EQ(r->frames_png, results[0]->frames_png);
+}
+
+TEST(FramePipeline, DifferentRequestsInParallel) {
+  FramePipeline p;
+  std::vector<std::shared_ptr<PreviewJob>> jobs;
+  for (int i = 0; i < 3; ++i) {
+    jobs.push_back(p.submit("box" + std::to_string(i), small(10 + i), [i] { return sliding_box(10 + i); }));
+  }
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(jobs[i]->wait()->frames_png.size(), static_cast<std::size_t>(10 + i));
+}
+
+}  // namespace
+}  // namespace softtune::render
