@@ -102,6 +102,9 @@ TEST(Hardening, HugeHeadersAre431) {
   auto r1 = client.Get("/api/v1/health", one_huge);
   ASSERT_TRUE(r1);
   EXPECT_EQ(r1->status, 431);
+  auto one_long_line = client.Get("/api/v1/health", {{"X-Filler", std::string(limits::kMaxHeaderLineBytes + 100, 'd')}});
+  ASSERT_TRUE(one_long_line);
+  EXPECT_EQ(one_long_line->status, 431);
   httplib::Headers many;
   for (int i = 0; i < 40; ++i) many.emplace("X-Filler-" + std::to_string(i), std::string(500, 'b'));
   auto r2 = client.Get("/api/v1/health", many);
