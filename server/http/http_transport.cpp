@@ -428,6 +428,17 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
     return httplib::Server::HandlerResponse::Unhandled;
   });
 
+  // "Expect: 100-continue" is answered before the pre-routing hook runs: refuse there too, so a client
+  // never sends a body we would refuse.
+  s.set_expect_100_continue_handler([](const httplib::Request& req, httplib::Response& res) {
+    if (auto problem = check_request_head(policy_head(req))) {
+      fill(res, problem_response(*problem));
+      close_connection(req, res);
+      return problem->status;
+    }
+    return 100;
+  });
+
   auto dispatch = [&routed = impl_->service](const httplib::Request& req, httplib::Response& res) {
     HttpResponse response = routed.handle(plain_request(req));
     if (t_connection) t_connection->route = response.route;

@@ -89,6 +89,10 @@ TEST(Hardening, OversizedBodyIs413) {
   const std::string r = exchange(s.port(), "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\n"
                                            "Content-Length: 1073741824\r\n\r\n");
   EXPECT_EQ(status_of(r), 413);
+  // With "Expect: 100-continue" the refusal comes instead of "100 Continue".
+  const std::string expecting = exchange(s.port(), "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\n"
+                                                   "Content-Length: 5000000\r\nExpect: 100-continue\r\n\r\n");
+  EXPECT_EQ(status_of(expecting), 413) << expecting;
   // Sent, one byte over the limit: the answer comes before the body is read.
   std::string body = "[" + std::string(limits::kMaxBodyBytes - 1, ' ') + "]";
   const std::string over = exchange(s.port(), "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\n"
