@@ -233,7 +233,7 @@ HttpRequest policy_head(const httplib::Request& req) {
   out.method = req.method;
   out.path = req.path;
   for (const char* name : kPolicyHeaders) {
-    if (req.has_header(name)) out.headers.emplace(name, req.get_header_value(name));
+    if (auto it = req.headers.find(name); it != req.headers.end()) out.headers.emplace(name, it->second);
   }
   return out;
 }
