@@ -118,5 +118,8 @@ print(f"                  server CPU per request: softtune {cs:.1f} us, bare {cb
 print(f"  1 connection:   softtune p50 {s1:6.1f} us   bare p50 {b1:6.1f} us   ratio {s1 / b1:.2f}x  (goal <= 2x)")
 u8 = med("uncached8", 0)
 print(f"  8 connections, every request different (no cache hits): softtune {u8:8.0f} req/s, ratio {u8 / b8:.2f}x")
-print("  per round (8-conn req/s softtune/bare):", " ".join(f"{s[0]:.0f}/{b[0]:.0f}" for s, b in zip(runs["softtune8"], runs["bare8"])))
+r8 = [s[0] / b[0] for s, b in zip(runs["softtune8"], runs["bare8"])]
+r1 = [s[1] / b[1] for s, b in zip(runs["softtune1"], runs["bare1"])]
+print("  per round, 8-conn throughput ratio:", " ".join(f"{r:.2f}" for r in r8), f"(median {statistics.median(r8):.2f})")
+print("  per round, 1-conn p50 ratio:       ", " ".join(f"{r:.2f}" for r in r1), f"(median {statistics.median(r1):.2f})")
 ' "$ticks_per_s" "$seconds" "$rounds"
