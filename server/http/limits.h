@@ -13,6 +13,10 @@ namespace softtune::http::limits {
 inline constexpr std::size_t kMaxBodyBytes = 1 << 20;
 /// Largest request line plus headers (bytes); more is refused with 431.
 inline constexpr std::size_t kMaxHeaderBytes = 16 * 1024;
+/// Longest single request line or header line (bytes): cpp-httplib 0.11.4's compiled-in
+/// CPPHTTPLIB_HEADER_MAX_LENGTH / CPPHTTPLIB_REQUEST_URI_MAX_LENGTH; a longer header line is 431, a
+/// longer request line 414.
+inline constexpr std::size_t kMaxHeaderLineBytes = 8192;
 /// Deepest JSON nesting accepted (400 above); nlohmann's recursive dump and copy crash on deep documents.
 inline constexpr int kMaxJsonDepth = codec::kMaxJsonDepth;
 
@@ -30,5 +34,11 @@ inline constexpr std::chrono::milliseconds kWriteTimeout{10'000};
 /// An idle keep-alive connection is closed after this time, and after this many requests.
 inline constexpr std::chrono::milliseconds kKeepAliveTimeout{5'000};
 inline constexpr std::size_t kKeepAliveMaxRequests = 1000;
+
+/// Responses of deterministic contracts (tune) kept for repeated requests (a designer moving a slider
+/// back and forth asks the same thing again): at most this many entries and bytes, least recently
+/// used evicted first.
+inline constexpr std::size_t kResponseCacheEntries = 4096;
+inline constexpr std::size_t kResponseCacheBytes = 64u << 20;
 
 }  // namespace softtune::http::limits
