@@ -6,28 +6,29 @@
 #include "cli/cli_io.h"
 #include "cli/flag_fields.h"
 #include "codec/json_reader.h"
-#include "codec/preview_codec.h"
+#include "codec/preset_loader.h"
+#include "codec/preview_service.h"
 #include "codec/problem.h"
-#include "codec/tune_codec.h"
-#include "softtune/render/oscillator_frames.h"
 
 namespace softtune::cli {
 namespace {
 
 constexpr const char* kHelp = R"(softtune render: preview frames of a preset as PNG files.
 
-  softtune render --preset oscillator --out DIR [options]
+  softtune render --preset NAME --out DIR [options]
     --frames N            frames to render (default 60, at most 600)
+    --presets DIR         where presets live (default $SOFTTUNE_PRESETS, else ./presets)
+    --mass-model M        effective | box2d_reduced (scene presets)
     --size WxH            frame size in pixels (default 640x360, at most 1920x1080)
     --filmstrip-every N   frames between filmstrip tiles (default: about 10 tiles)
-  the oscillator's tuning, as in `softtune tune` (default: 30 frames, some, 1 kg):
+  the oscillator preset's tuning, as in `softtune tune` (default: the preset's own):
     --request FILE        a tune request JSON (- for stdin), or these flags:
     --response-frames N   one oscillation period lasts N frames
     --basis-fps B   --frequency F   --oscillation free|some|none   --damping-ratio Z
     --mass M   --fps F   --substeps N   --mode standard|exact
 
 Writes DIR/frame_0000.png ... and DIR/filmstrip.png, and prints {id, frames, filmstrip, stages, timings}.
-Presets: oscillator (the 1-D oscillator: soft method vs the exact analytic ghost).
+Presets: every file in presets/; oscillator draws the soft method beside the exact analytic ghost.
 Bad input: exit code 2 and a problem JSON on stderr naming the field.
 )";
 
@@ -65,31 +66,32 @@ void write_file(const std::filesystem::path& path, const std::string& bytes) {
 int run_render(const Args& args) {
   return guarded([&] {
     std::vector<std::string> with_value = flag_names(kTuneFlags);
-    with_value.insert(with_value.end(), {"preset", "frames", "size", "filmstrip-every", "out", "request"});
+    with_value.insert(with_value.end(), {"preset", "frames", "size", "filmstrip-every", "out", "request", "presets",
+                                         "mass-model"});
     const Flags flags = parse_flags(args, with_value, {"help"});
     if (flags.has("help")) {
       std::cout << kHelp;
       return kExitOk;
     }
     const auto preset = flags.get("preset");
-    if (!preset) throw codec::invalid_field("--preset", "is required (available: oscillator)");
-    if (*preset != "oscillator") {
-      throw codec::invalid_field("--preset", "unknown preset \"" + *preset + "\" (available: oscillator)");
-    }
+    if (!preset) throw codec::invalid_field("--preset", "is required (softtune simulate lists none; see presets/)");
     const auto out_dir = flags.get("out");
     if (!out_dir || out_dir->empty()) throw codec::invalid_field("--out", "is required: the directory for the PNGs");
 
-    // The render settings go through the same reader as POST /api/v1/preview.
-    nlohmann::json settings_doc = nlohmann::json::object();
-    if (flags.has("frames")) settings_doc["frames"] = flag_number(flags, "frames");
-    if (flags.has("filmstrip-every")) settings_doc["filmstrip_every"] = flag_number(flags, "filmstrip-every");
-    if (auto size = flags.get("size")) settings_doc["size"] = *size;
-    codec::ObjectReader settings_reader = codec::read_object(settings_doc, "");
-    const render::PreviewSettings settings = codec::read_preview_settings(settings_reader);
-
-    const TuneRequest request = codec::decode_tune_request(tune_request_from(flags));
-    const render::OscillatorScene scene = render::oscillator_scene(request, tune(request));
-
+    // The same request as POST /api/v1/preview: a preset, or the oscillator with its tuning from flags.
+    bool any_tune_flag = flags.has("request");
+    for (const FlagField& f : kTuneFlags) any_tune_flag = any_tune_flag || flags.has(f.flag);
+    nlohmann::json request = nlohmann::json::object();
+    if (any_tune_flag) {
+      if (*preset != "oscillator") throw codec::invalid_field("--preset", "tuning flags apply to the oscillator only");
+      request = tune_request_from(flags);
+    } else {
+      request["preset"] = *preset;
+    }
+    if (flags.has("frames")) request["frames"] = flag_number(flags, "frames");
+    if (flags.has("filmstrip-every")) request["filmstrip_every"] = flag_number(flags, "filmstrip-every");
+    if (auto size = flags.get("size")) request["size"] = *size;
+    if (auto model = flags.get("mass-model")) request["mass_model"] = *model;
     const std::filesystem::path dir(*out_dir);
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
@@ -97,22 +99,24 @@ int run_render(const Args& args) {
       throw codec::invalid_field("--out", "cannot create the directory \"" + *out_dir + "\"");
     }
 
-    render::FramePipeline pipeline;
-    const auto job = pipeline.submit(codec::canonical_oscillator_request(scene), settings,
-                                     [&] { return render::oscillator_frames(scene, settings.frames); });
-    const auto preview = job->wait();
+    codec::PreviewService previews;
+    const nlohmann::json answer = previews.start(request, codec::resolve_presets_dir(flags.get("presets")), "");
+    const std::string id = answer.at("id");
     auto frame_name = [](int i) {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%04d.png", i);
       return std::string(name);
     };
-    for (int i = 0; i < static_cast<int>(preview->frames_png.size()); ++i) {
-      write_file(dir / frame_name(i), preview->frames_png[i]);
+    nlohmann::json out = answer;
+    out["frames"] = nlohmann::json::array();
+    for (int i = 0; i < answer.at("frame_count").get<int>(); ++i) {
+      write_file(dir / frame_name(i), *previews.frame_png(id, i));
+      out["frames"].push_back((dir / frame_name(i)).string());
     }
-    write_file(dir / "filmstrip.png", preview->filmstrip_png);
-    print_json(codec::encode_preview(*preview, job->from_cache(),
-                                     [&](int i) { return (dir / frame_name(i)).string(); },
-                                     (dir / "filmstrip.png").string()));
+    write_file(dir / "filmstrip.png", *previews.filmstrip_png(id));
+    out["filmstrip"] = (dir / "filmstrip.png").string();
+    out.erase("progress_url");
+    print_json(out);
     return kExitOk;
   });
 }

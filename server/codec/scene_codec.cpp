@@ -183,10 +183,14 @@ ProbeSettings read_probe(ObjectReader& r) {
   return p;
 }
 
+}  // namespace
+
 std::optional<MassModel> read_mass_model(ObjectReader& r) {
   auto i = r.choice("mass_model", {"effective", "box2d_reduced"});
   return i ? std::optional<MassModel>(static_cast<MassModel>(*i)) : std::nullopt;
 }
+
+namespace {
 
 Expectation read_expectation(ObjectReader& r) {
   Expectation e;
@@ -331,24 +335,26 @@ json encode_scene_result(const Scene& scene, const SceneResult& r) {
   return out;
 }
 
-json run_simulate(const json& request, const std::string& presets_dir) {
-  ObjectReader r = read_object(request, "");
-  json scene_doc;
+json requested_scene_document(ObjectReader& r, const json& request, const std::string& presets_dir,
+                              std::initializer_list<const char*> run_options) {
   if (r.has("preset") || r.has("scene")) {
     if (r.has("preset") && r.has("scene")) throw invalid_field("scene", "give either preset or scene, not both");
-    if (auto name = r.string("preset")) {
-      scene_doc = load_preset(presets_dir, *name);
-    } else {
-      scene_doc = *r.raw("scene");
-      validate_preset(scene_doc, load_schema(presets_dir), "scene");
-    }
-  } else {
-    // A bare scene: every key belongs to it, except the run options.
-    scene_doc = request;
-    for (const char* option : {"frames", "frame_stride"}) scene_doc.erase(option);
-    validate_preset(scene_doc, load_schema(presets_dir), "request");
-    for (auto it = request.begin(); it != request.end(); ++it) r.raw(it.key());
+    if (auto name = r.string("preset")) return load_preset(presets_dir, *name);
+    json scene_doc = *r.raw("scene");
+    validate_preset(scene_doc, load_schema(presets_dir), "scene");
+    return scene_doc;
   }
+  // A bare scene: every key belongs to it, except the run options.
+  json scene_doc = request;
+  for (const char* option : run_options) scene_doc.erase(option);
+  validate_preset(scene_doc, load_schema(presets_dir), "request");
+  for (auto it = scene_doc.begin(); it != scene_doc.end(); ++it) r.raw(it.key());
+  return scene_doc;
+}
+
+json run_simulate(const json& request, const std::string& presets_dir) {
+  ObjectReader r = read_object(request, "");
+  const json scene_doc = requested_scene_document(r, request, presets_dir, {"frames", "frame_stride"});
   RunOptions options;
   options.mass_model = read_mass_model(r);
   options.record_frames = read_bool(r, "frames", false);

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "codec/json_reader.h"
 #include "softtune/scene/expectations.h"
 #include "softtune/scene/runner.h"
 #include "softtune/scene/scene.h"
@@ -24,6 +25,14 @@ nlohmann::json encode_scene_result(const scene::Scene& scene, const scene::Scene
 /// "mass_model" ("effective" | "box2d_reduced"), "frames" (bool) and "frame_stride" (1..1000).
 /// Presets come from `presets_dir`; a full scene is validated against `presets_dir`/schema.json too.
 nlohmann::json run_simulate(const nlohmann::json& request, const std::string& presets_dir);
+
+/// The scene document a request names: {"preset": NAME}, {"scene": {...}}, or the request itself as a bare
+/// scene without its `run_options` keys; validated against presets/schema.json. Marks what it read in `r`.
+nlohmann::json requested_scene_document(ObjectReader& r, const nlohmann::json& request, const std::string& presets_dir,
+                                        std::initializer_list<const char*> run_options);
+
+/// The optional "mass_model" field ("effective" | "box2d_reduced").
+std::optional<scene::MassModel> read_mass_model(ObjectReader& r);
 /// The same with the presets directory from resolve_presets_dir().
 nlohmann::json run_simulate(const nlohmann::json& request);
 

@@ -3,6 +3,7 @@
 #include "codec/json_reader.h"
 #include "codec/tune_codec.h"
 #include "http/openapi.h"
+#include "http/preview_routes.h"
 #include "http/static_files.h"
 
 namespace softtune::http {
@@ -65,13 +66,15 @@ Handler json_contract(std::function<nlohmann::json(const nlohmann::json&)> contr
 }
 
 std::vector<Route> service_routes() {
-  return {
+  std::vector<Route> routes = {
       {"GET", "/api/v1/health", health},
       {"POST", "/api/v1/tune", json_contract(codec::run_tune, "tune")},
       {"GET", "/api/v1/openapi.json", openapi},
       {"GET", "/metrics", metrics},
-      {"GET", "/{path...}", static_page},
   };
+  for (Route& r : preview_routes()) routes.push_back(std::move(r));
+  routes.push_back({"GET", "/{path...}", static_page});  // the static page's catch-all comes last
+  return routes;
 }
 
 }  // namespace softtune::http

@@ -12,6 +12,7 @@
 #include "http/limits.h"
 #include "http/routes.h"
 #include "openapi_conformance.h"
+#include "softtune/render/frame_pipeline.h"
 
 using nlohmann::json;
 using softtune::http::testing::conformance_error;
@@ -88,7 +89,10 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["response_cache_entries"], l::kResponseCacheEntries);
   EXPECT_EQ(x["response_cache_bytes"], l::kResponseCacheBytes);
   EXPECT_EQ(x["max_header_line_bytes"], l::kMaxHeaderLineBytes);
-  EXPECT_EQ(x.size(), 13u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x["max_preview_frames"], softtune::render::caps::kMaxFrames);
+  EXPECT_EQ(x["max_preview_width"], softtune::render::caps::kMaxWidth);
+  EXPECT_EQ(x["max_preview_height"], softtune::render::caps::kMaxHeight);
+  EXPECT_EQ(x.size(), 16u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {

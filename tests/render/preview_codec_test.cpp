@@ -94,7 +94,8 @@ TEST_F(RenderCommand, WritesFramesAndFilmstrip) {
   const auto doc = nlohmann::json::parse(out);
   ASSERT_EQ(doc["frames"].size(), 5u);
   EXPECT_EQ(doc["frames"][4], (dir / "frame_0004.png").string());
-  EXPECT_EQ(doc["stages"], (nlohmann::json{"render", "png_encode"}));
+  // The oscillator runs on the core integrators: no Box2D stage, then rendering.
+  EXPECT_EQ(doc["stages"], (nlohmann::json{"core_integrator", "render", "png_encode"}));
   EXPECT_EQ(doc["id"].get<std::string>().size(), 64u);
   for (const std::string name : {"frame_0000.png", "frame_0004.png", "filmstrip.png"}) {
     std::ifstream in(dir / name, std::ios::binary);
@@ -131,9 +132,11 @@ TEST_F(RenderCommand, SameMotionSameIdWhicheverWayItIsAsked) {
 
 TEST_F(RenderCommand, RefusesWithAProblemNamingTheField) {
   std::string err;
-  EXPECT_EQ(run({"--preset", "buddhas", "--out", dir.string()}, nullptr, &err), 2);
+  EXPECT_EQ(run({"--preset", "nosuch", "--out", dir.string()}, nullptr, &err), 2);
+  EXPECT_NE(err.find("\"preset\""), std::string::npos);
+  EXPECT_NE(err.find("nosuch"), std::string::npos);
+  EXPECT_EQ(run({"--preset", "buddhas", "--out", dir.string(), "--mass", "2"}, nullptr, &err), 2);
   EXPECT_NE(err.find("--preset"), std::string::npos);
-  EXPECT_NE(err.find("oscillator"), std::string::npos);
   EXPECT_EQ(run({"--preset", "oscillator", "--frames", "601", "--out", dir.string()}, nullptr, &err), 2);
   EXPECT_NE(err.find("\"frames\""), std::string::npos);
   EXPECT_EQ(run({"--preset", "oscillator", "--size", "3840x2160", "--out", dir.string()}, nullptr, &err), 2);

@@ -1,0 +1,176 @@
+#include "codec/preview_service.h"
+
+#include <algorithm>
+
+#include "codec/json_reader.h"
+#include "codec/json_writer.h"
+#include "codec/preset_loader.h"
+#include "codec/preview_codec.h"
+#include "codec/problem.h"
+#include "codec/scene_codec.h"
+#include "codec/scene_frames.h"
+#include "codec/tune_codec.h"
+#include "softtune/render/oscillator_frames.h"
+
+namespace softtune::codec {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kTuneFields[] = {"fps", "substeps", "response_frames", "basis_fps", "frequency_hz",
+                                       "oscillation", "damping_ratio", "mode", "effective_mass", "constraint"};
+
+// The oscillator preset's first oscillator as a tune request, with the preset's step rate.
+json oscillator_preset_tuning(const json& preset, double& initial_displacement) {
+  const json& osc = preset.at("oscillators").at(0);
+  json tune = json::object();
+  for (const char* key : kTuneFields) {
+    if (osc.contains(key)) tune[key] = osc[key];
+  }
+  const json& world = preset.value("world", json::object());
+  for (const char* key : {"fps", "substeps"}) {
+    if (world.contains(key)) tune[key] = world[key];
+  }
+  initial_displacement = osc.value("initial_displacement", 0.5);
+  return tune;
+}
+
+void plan_oscillator(PreviewPlan& plan, const TuneRequest& request, double initial_displacement) {
+  render::OscillatorScene scene = render::oscillator_scene(request, tune(request));
+  scene.initial_displacement_m = initial_displacement;
+  plan.canonical = "oscillator:" + canonical_oscillator_request(scene);
+  const int frames = plan.settings.frames;
+  auto stages = plan.prepare_stages;
+  plan.make_frames = [scene, frames, stages] {
+    stages->add(Stage::core_integrator);
+    return render::oscillator_frames(scene, frames);
+  };
+}
+
+void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::MassModel> mass_model) {
+  const scene::Scene scene = decode_scene(scene_doc);
+  const int total = scene::frame_count(scene.world);
+  if (total + 1 < plan.settings.frames) {
+    plan.warnings.push_back({{"code", "frames_clamped"},
+                             {"message", "the scene runs " + std::to_string(total + 1) + " frames; " +
+                                             std::to_string(plan.settings.frames) + " were asked for"}});
+    plan.settings.frames = total + 1;
+  }
+  // Snapshots at frames 0, stride, 2 stride, ...: at least settings.frames of them.
+  scene::RunOptions options;
+  options.record_frames = true;
+  options.frame_stride = plan.settings.frames > 1 ? std::max(1, total / (plan.settings.frames - 1)) : 1;
+  options.mass_model = mass_model;
+  plan.canonical = "scene:" + scene_doc.dump() + "|mass_model:" +
+                   (mass_model ? std::string(scene::mass_model_name(*mass_model)) : "scene") +
+                   "|stride:" + std::to_string(options.frame_stride);
+  const int frames = plan.settings.frames;
+  auto stages = plan.prepare_stages;
+  plan.make_frames = [scene, options, frames, stages] {
+    const scene::SceneResult result = scene::run_scene(scene, options);
+    for (int i = 0; i < result.stages.count; ++i) stages->add(result.stages.items[i]);
+    if (result.error) throw invalid_field(result.error->field, result.error->rule);
+    if (result.snapshots.empty()) throw invalid_field("scene", "has no bodies to draw (an oscillator-only scene: "
+                                                              "ask with its tune fields instead)");
+    std::vector<scene::Snapshot> used(result.snapshots.begin(),
+                                      result.snapshots.begin() + std::min<std::size_t>(frames, result.snapshots.size()));
+    while (static_cast<int>(used.size()) < frames) used.push_back(used.back());  // a run that stopped early
+    return scene_frames(scene, used);
+  };
+}
+
+}  // namespace
+
+PreviewPlan plan_preview(const json& request, const std::string& presets_dir) {
+  ObjectReader r = read_object(request, "");
+  PreviewPlan plan;
+  plan.settings = read_preview_settings(r);
+  if (auto v = r.raw("wait")) {
+    if (!v->is_boolean()) throw invalid_field("wait", "must be true or false");
+    plan.wait = v->get<bool>();
+  }
+  const auto mass_model = read_mass_model(r);
+  const bool has_tune_fields = std::any_of(std::begin(kTuneFields), std::end(kTuneFields),
+                                           [&r](const char* key) { return r.has(key); });
+  const bool oscillator_preset = r.has("preset") && request["preset"] == "oscillator";
+  if ((r.has("preset") || r.has("scene")) && has_tune_fields) {
+    throw invalid_field("preset", "give a preset or scene, or tune fields for the oscillator, not both");
+  }
+  if (oscillator_preset) {
+    r.raw("preset");
+    double x0 = 0.5;
+    const json tuning = oscillator_preset_tuning(load_preset(presets_dir, "oscillator"), x0);
+    plan_oscillator(plan, decode_tune_request(tuning), x0);
+  } else if (r.has("preset") || r.has("scene")) {
+    plan_scene(plan, requested_scene_document(r, request, presets_dir, {}), mass_model);
+  } else if (has_tune_fields) {
+    plan_oscillator(plan, read_tune_fields(r), 0.5);
+  } else {
+    throw invalid_field("preset", "give a preset name, a scene, or tune fields (an oscillator)");
+  }
+  r.finish();
+  if (auto e = render::validate_preview_settings(plan.settings)) throw invalid_field(e->field, e->rule);
+  return plan;
+}
+
+PreviewService::PreviewService(render::PipelineOptions options) : pipeline_(std::move(options)) {}
+
+json PreviewService::answer(const render::PreviewJob& job, const std::string& url_prefix) const {
+  const std::string base = url_prefix + "/" + job.id();
+  const render::PreviewProgress p = job.progress();
+  if (!p.finished) {
+    return {{"id", job.id()}, {"status", p.failed ? "failed" : "rendering"},
+            {"progress", {{"done", p.done}, {"total", p.total}}}, {"progress_url", base}};
+  }
+  json out = encode_preview(*job.wait(), job.from_cache(), [&base](int n) { return base + "/" + std::to_string(n) + ".png"; },
+                            base + "/filmstrip.png");
+  out["status"] = "done";
+  out["progress"] = {{"done", p.done}, {"total", p.total}};
+  out["progress_url"] = base;
+  return out;
+}
+
+json PreviewService::start(const json& request, const std::string& presets_dir, const std::string& url_prefix) {
+  PreviewPlan plan = plan_preview(request, presets_dir);
+  const auto job = pipeline_.submit(plan.canonical, plan.settings, plan.make_frames);
+  if (plan.wait) {
+    try {
+      job->wait();
+    } catch (const std::runtime_error& e) {
+      throw Problem(500, "Render failed", "", e.what());
+    }
+  }
+  json out = answer(*job, url_prefix);
+  if (!job->from_cache() && job->progress().finished) {
+    // The stages that ran this time: the simulation, then rendering.
+    StageList all = *plan.prepare_stages;
+    const render::PreviewProgress p = job->progress();
+    if (p.finished && !p.failed) {
+      const StageList& render_stages = job->wait()->stages;
+      for (int i = 0; i < render_stages.count; ++i) all.add(render_stages.items[i]);
+    }
+    out["stages"] = stages_json(all);
+  }
+  out["warnings"] = plan.warnings;
+  return out;
+}
+
+std::optional<json> PreviewService::status(const std::string& id, const std::string& url_prefix) {
+  const auto job = pipeline_.find(id);
+  if (!job) return std::nullopt;
+  return answer(*job, url_prefix);
+}
+
+std::optional<std::string> PreviewService::frame_png(const std::string& id, int n) {
+  const auto preview = pipeline_.cached(id);
+  if (!preview || n < 0 || n >= static_cast<int>(preview->frames_png.size())) return std::nullopt;
+  return preview->frames_png[n];
+}
+
+std::optional<std::string> PreviewService::filmstrip_png(const std::string& id) {
+  const auto preview = pipeline_.cached(id);
+  if (!preview) return std::nullopt;
+  return preview->filmstrip_png;
+}
+
+}  // namespace softtune::codec

@@ -1,0 +1,50 @@
+#pragma once
+// Preview frames for a request: {"preset": NAME} or {"scene": {...}} (a Box2D scene, drawn from its
+// snapshots), or tune fields (the 1-D oscillator with its analytic ghost), plus "frames", "size",
+// "filmstrip_every", "mass_model" and "wait". One long-lived frame pipeline serves every request; its
+// workers create their GL contexts only when the first frame is asked for.
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "softtune/render/frame_pipeline.h"
+
+namespace softtune::codec {
+
+/// What to render: the canonical request text (its hash names the result), the settings, and the
+/// function that simulates and builds the draw model (run only when the result is not cached).
+struct PreviewPlan {
+  std::string canonical;
+  render::PreviewSettings settings;
+  std::function<render::FrameSet()> make_frames;
+  bool wait = true;               ///< answer when done (true) or at once with a progress URL (false)
+  nlohmann::json warnings = nlohmann::json::array();
+  std::shared_ptr<StageList> prepare_stages = std::make_shared<StageList>();  ///< filled by make_frames
+};
+
+/// Reads a preview request; throws Problem (422) naming the field.
+PreviewPlan plan_preview(const nlohmann::json& request, const std::string& presets_dir);
+
+class PreviewService {
+ public:
+  explicit PreviewService(render::PipelineOptions options = {});
+
+  /// Starts (or finds) a preview; `url_prefix` is where its frames are served ("/api/v1/preview").
+  nlohmann::json start(const nlohmann::json& request, const std::string& presets_dir, const std::string& url_prefix);
+  /// Progress of a job in flight, or the finished answer; nullopt for an unknown id.
+  std::optional<nlohmann::json> status(const std::string& id, const std::string& url_prefix);
+  /// PNG bytes of frame n, or of the filmstrip; nullopt when the id or frame is unknown.
+  std::optional<std::string> frame_png(const std::string& id, int n);
+  std::optional<std::string> filmstrip_png(const std::string& id);
+
+  render::CacheStats cache_stats() const { return pipeline_.cache_stats(); }
+
+ private:
+  nlohmann::json answer(const render::PreviewJob& job, const std::string& url_prefix) const;
+
+  render::FramePipeline pipeline_;
+};
+
+}  // namespace softtune::codec

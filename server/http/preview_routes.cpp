@@ -1,0 +1,97 @@
+#include "http/preview_routes.h"
+
+#include <atomic>
+#include <charconv>
+#include <memory>
+#include <mutex>
+
+#include "codec/json_reader.h"
+#include "codec/preset_loader.h"
+#include "codec/preview_service.h"
+#include "codec/problem.h"
+
+namespace softtune::http {
+namespace {
+
+constexpr const char* kPrefix = "/api/v1/preview";
+
+// One PreviewService per route table, made when first needed.
+class LazyPreviews {
+ public:
+  codec::PreviewService& get() {
+    std::call_once(once_, [this] {
+      service_ = std::make_unique<codec::PreviewService>();
+      started_.store(true, std::memory_order_release);
+    });
+    return *service_;
+  }
+  /// False until the first preview request: GETs before it find nothing and start nothing.
+  bool started() const { return started_.load(std::memory_order_acquire); }
+
+ private:
+  std::once_flag once_;
+  std::atomic<bool> started_{false};
+  std::unique_ptr<codec::PreviewService> service_;
+};
+
+codec::Problem not_found(const std::string& what) { return codec::Problem(404, "Not found", "id", what); }
+
+// A content-addressed PNG: the same URL always names the same bytes.
+HttpResponse png(const HttpRequest& request, std::string bytes, const std::string& etag) {
+  HttpResponse r;
+  r.headers.emplace_back("ETag", etag);
+  r.headers.emplace_back("Cache-Control", "public, max-age=31536000, immutable");
+  if (request.header("If-None-Match") == etag) {
+    r.status = 304;
+    r.content_type.clear();
+    return r;
+  }
+  r.content_type = "image/png";
+  r.body = std::move(bytes);
+  return r;
+}
+
+int frame_index(const std::string& text) {
+  int n = -1;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (ec != std::errc() || end != text.data() + text.size() || n < 0) {
+    throw codec::invalid_field("n", "must be a frame number (0, 1, ...)");
+  }
+  return n;
+}
+
+}  // namespace
+
+std::vector<Route> preview_routes() {
+  auto previews = std::make_shared<LazyPreviews>();
+  return {
+      {"POST", "/api/v1/preview",
+       [previews](const HttpRequest& request, Service&) {
+         return json_response(previews->get().start(codec::parse_json(request.body), codec::resolve_presets_dir(), kPrefix));
+       }},
+      {"GET", "/api/v1/preview/{id}",
+       [previews](const HttpRequest& request, Service&) {
+         const std::string& id = request.params.at("id");
+         auto status = previews->started() ? previews->get().status(id, kPrefix) : std::nullopt;
+         if (!status) throw not_found("no preview " + id + " (they are kept in a bounded cache; ask again)");
+         return json_response(*status);
+       }},
+      {"GET", "/api/v1/preview/{id}/filmstrip.png",
+       [previews](const HttpRequest& request, Service&) {
+         const std::string& id = request.params.at("id");
+         auto bytes = previews->started() ? previews->get().filmstrip_png(id) : std::nullopt;
+         if (!bytes) throw not_found("no finished preview " + id);
+         return png(request, std::move(*bytes), "\"" + id + "-filmstrip\"");
+       }},
+      {"GET", "/api/v1/preview/{id}/{n}.png",
+       [previews](const HttpRequest& request, Service&) {
+         const std::string& id = request.params.at("id");
+         const int n = frame_index(request.params.at("n"));
+         auto bytes = previews->started() ? previews->get().frame_png(id, n) : std::nullopt;
+         if (!bytes) throw not_found("no frame " + std::to_string(n) + " of preview " + id);
+         return png(request, std::move(*bytes), "\"" + id + "-" + std::to_string(n) + "\"");
+       }},
+  };
+}
+
+}  // namespace softtune::http

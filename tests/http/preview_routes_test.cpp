@@ -1,0 +1,97 @@
+// POST /api/v1/preview and its frame routes, against a real in-process server.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "openapi_conformance.h"
+#include "softtune/render/renderer.h"
+#include "test_server.h"
+
+using nlohmann::json;
+using softtune::http::testing::TestServer;
+
+namespace {
+
+json post_preview(httplib::Client& c, const json& body, int& status) {
+  auto r = c.Post("/api/v1/preview", body.dump(), "application/json");
+  status = r ? r->status : 0;
+  return r ? json::parse(r->body) : json();
+}
+
+// PNG files start with these eight bytes.
+bool is_png(const std::string& bytes) { return bytes.rfind("\x89PNG\r\n\x1a\n", 0) == 0; }
+
+}  // namespace
+
+TEST(PreviewRoutes, NoContextUntilFramesAreAskedFor) {
+  const int before = softtune::render::gl_contexts_created();
+  TestServer server;
+  auto c = server.client();
+  ASSERT_EQ(c.Get("/api/v1/health")->status, 200);
+  ASSERT_EQ(c.Post("/api/v1/tune", R"({"response_frames": 12, "oscillation": "some", "effective_mass": 1})",
+                   "application/json")->status, 200);
+  EXPECT_EQ(c.Get("/api/v1/preview/abc/0.png")->status, 404);
+  EXPECT_EQ(softtune::render::gl_contexts_created(), before);
+}
+
+TEST(PreviewRoutes, OscillatorFramesAreServedWithCachingHeaders) {
+  TestServer server;
+  auto c = server.client();
+  int status = 0;
+  const json body = {{"response_frames", 20}, {"oscillation", "free"}, {"effective_mass", 1}, {"mode", "exact"},
+                     {"frames", 4}, {"size", "64x36"}};
+  const json answer = post_preview(c, body, status);
+  ASSERT_EQ(status, 200) << answer.dump();
+  EXPECT_EQ(softtune::http::testing::conformance_error("/api/v1/preview", "post", 200, "application/json", answer), "");
+  EXPECT_EQ(answer["status"], "done");
+  ASSERT_EQ(answer["frames"].size(), 4u);
+  EXPECT_EQ(answer["stages"], (json{"core_integrator", "render", "png_encode"}));  // no Box2D for the oscillator
+
+  auto frame = c.Get(answer["frames"][3].get<std::string>().c_str());
+  ASSERT_EQ(frame->status, 200);
+  EXPECT_EQ(frame->get_header_value("Content-Type"), "image/png");
+  EXPECT_TRUE(is_png(frame->body));
+  const std::string etag = frame->get_header_value("ETag");
+  EXPECT_NE(etag.find(answer["id"].get<std::string>()), std::string::npos);
+  auto again = c.Get(answer["frames"][3].get<std::string>().c_str(), {{"If-None-Match", etag}});
+  EXPECT_EQ(again->status, 304);
+  EXPECT_TRUE(is_png(c.Get(answer["filmstrip"].get<std::string>().c_str())->body));
+
+  // The same request again is a cache hit with the same id; nothing runs.
+  const json repeat = post_preview(c, body, status);
+  EXPECT_EQ(repeat["id"], answer["id"]);
+  EXPECT_TRUE(repeat["cached"].get<bool>());
+  EXPECT_EQ(repeat["stages"], json::array());
+
+  // Progress of a known id; a frame past the end and an unknown id are 404.
+  EXPECT_EQ(json::parse(c.Get(answer["progress_url"].get<std::string>().c_str())->body)["status"], "done");
+  EXPECT_EQ(c.Get(("/api/v1/preview/" + answer["id"].get<std::string>() + "/4.png").c_str())->status, 404);
+  EXPECT_EQ(c.Get("/api/v1/preview/nosuchid/0.png")->status, 404);
+}
+
+TEST(PreviewRoutes, SceneFramesRunTheBox2DScene) {
+  setenv("SOFTTUNE_PRESETS", SOFTTUNE_SOURCE_DIR "/presets", 1);
+  TestServer server;
+  auto c = server.client();
+  int status = 0;
+  const json answer = post_preview(c, {{"preset", "buddhas"}, {"frames", 3}, {"size", "64x36"}}, status);
+  ASSERT_EQ(status, 200) << answer.dump();
+  const json& stages = answer["stages"];
+  EXPECT_NE(std::find(stages.begin(), stages.end(), "box2d_world"), stages.end());
+  EXPECT_NE(std::find(stages.begin(), stages.end(), "render"), stages.end());
+}
+
+TEST(PreviewRoutes, BadInputNamesTheField) {
+  setenv("SOFTTUNE_PRESETS", SOFTTUNE_SOURCE_DIR "/presets", 1);
+  TestServer server;
+  auto c = server.client();
+  int status = 0;
+  EXPECT_EQ(post_preview(c, {{"preset", "buddhas"}, {"frames", 601}}, status)["field"], "frames");
+  EXPECT_EQ(status, 422);
+  EXPECT_EQ(post_preview(c, {{"preset", "buddhas"}, {"size", "4000x4000"}}, status)["field"], "size");
+  EXPECT_EQ(post_preview(c, {{"preset", "nosuch"}}, status)["field"], "preset");
+  EXPECT_EQ(status, 404);
+  EXPECT_EQ(post_preview(c, json::object(), status)["field"], "preset");
+  EXPECT_EQ(post_preview(c, {{"preset", "buddhas"}, {"effective_mass", 2}}, status)["field"], "preset");
+  EXPECT_EQ(post_preview(c, {{"preset", "buddhas"}, {"wait", "yes"}}, status)["field"], "wait");
+}
