@@ -123,7 +123,7 @@ TuneRequest read_tune_fields(ObjectReader& r) {
   if (auto v = r.number("fps")) q.fps = *v;
   if (auto v = r.integer("substeps")) {
     if (*v < 1 || *v > limits::kMaxSubsteps) {
-      throw invalid_field("substeps", "must be an integer in [1, " + std::to_string(limits::kMaxSubsteps) + "]");
+      throw invalid_field(r.field("substeps"), "must be an integer in [1, " + std::to_string(limits::kMaxSubsteps) + "]");
     }
     q.substeps = static_cast<int>(*v);
   }
