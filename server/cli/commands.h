@@ -9,5 +9,6 @@ namespace softtune::cli {
 using Args = std::vector<std::string>;
 
 int run_tune(const Args& args);
+int run_serve(const Args& args);
 
 }  // namespace softtune::cli

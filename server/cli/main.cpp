@@ -14,6 +14,7 @@ struct Command {
 
 constexpr Command kCommands[] = {
     {"tune", "designer request -> k, c, gamma, beta, ERP/CFM, engine export, stability", softtune::cli::run_tune},
+    {"serve", "the REST API and the page on http://127.0.0.1:8080/", softtune::cli::run_serve},
 };
 
 int usage(std::ostream& out, int code) {

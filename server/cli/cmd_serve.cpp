@@ -1,0 +1,101 @@
+// `softtune serve`: the HTTP API and the page (README.md, "HTTP API"). Runs until SIGINT or SIGTERM,
+// then finishes the requests in flight and exits 0.
+#include <pthread.h>
+#include <signal.h>
+
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <thread>
+
+#include "cli/cli_io.h"
+#include "codec/problem.h"
+#include "http/http_transport.h"
+#include "http/limits.h"
+#include "http/routes.h"
+
+namespace softtune::cli {
+namespace {
+
+constexpr const char* kHelp = R"(softtune serve: the REST API under /api/v1/ and the page from web/.
+
+  --host H       address to listen on (default 127.0.0.1)
+  --port P       TCP port (default 8080; 0 picks a free one)
+  --threads N    worker threads, one per connection being served (default 8, at most 256)
+  --web DIR      folder of the static page (default web/, relative to the working directory)
+
+Prints the URL, then one line per request on stderr: method, path, status, microseconds.
+SIGINT or SIGTERM stops it after the requests in flight.
+)";
+
+int integer_flag(const Flags& f, const std::string& name, int fallback, int lo, int hi) {
+  if (!f.has(name)) return fallback;
+  const double v = flag_number(f, name);
+  if (v != static_cast<int>(v) || v < lo || v > hi) {
+    throw codec::invalid_field("--" + name, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  }
+  return static_cast<int>(v);
+}
+
+void log_line(std::string_view line) {
+  std::string out(line);
+  out += '\n';
+  std::fwrite(out.data(), 1, out.size(), stderr);  // one write per line: lines from workers do not interleave
+}
+
+}  // namespace
+
+int run_serve(const Args& args) {
+  return guarded([&] {
+    const Flags flags = parse_flags(args, {"host", "port", "threads", "web"}, {"help"});
+    if (flags.has("help")) {
+      std::cout << kHelp;
+      return kExitOk;
+    }
+    http::TransportOptions options;
+    options.host = flags.get("host").value_or("127.0.0.1");
+    options.port = integer_flag(flags, "port", 8080, 0, 65535);
+    options.threads = integer_flag(flags, "threads", http::limits::kDefaultThreads, 1, http::limits::kMaxThreads);
+    options.log = log_line;
+    http::ServiceConfig config;
+    config.web_root = flags.get("web").value_or("web");
+    if (!std::filesystem::is_directory(config.web_root)) {
+      std::cerr << "softtune: web folder \"" << config.web_root.string() << "\" not found; the page will answer 404\n";
+    }
+
+    // SIGINT/SIGTERM are blocked in every thread and taken by one waiter, which stops the server
+    // outside of signal context (stop() is not async-signal-safe). Threads inherit the mask.
+    sigset_t stop_signals;
+    sigemptyset(&stop_signals);
+    sigaddset(&stop_signals, SIGINT);
+    sigaddset(&stop_signals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+    http::Service service(config, http::service_routes());
+    http::HttpServer server(service, options);
+    int port = 0;
+    try {
+      port = server.bind();
+    } catch (const std::exception& e) {
+      std::cerr << "softtune: " << e.what() << '\n';
+      return kExitFailed;
+    }
+    std::atomic<bool> finished{false};
+    std::thread waiter([&] {
+      int signal = 0;
+      sigwait(&stop_signals, &signal);
+      if (!finished) std::cerr << "softtune: stopping (signal " << signal << ")\n";
+      server.stop();
+    });
+    std::cout << "softtune: serving http://" << options.host << ':' << port << "/ (Ctrl-C stops)" << std::endl;
+    server.run();
+    finished = true;
+    pthread_kill(waiter.native_handle(), SIGTERM);  // wakes the waiter when run() ended on its own
+    waiter.join();
+    return kExitOk;
+  });
+}
+
+}  // namespace softtune::cli

@@ -1,0 +1,34 @@
+#pragma once
+// Every limit of the HTTP service, named once. README.md "Limits" and the OpenAPI document
+// (info.x-softtune-limits) list the same numbers; tests/http/openapi_test.cpp checks that they agree.
+
+#include <chrono>
+#include <cstddef>
+
+#include "codec/json_reader.h"
+
+namespace softtune::http::limits {
+
+/// Largest request body (bytes); a larger Content-Length is refused with 413 before the body is read.
+inline constexpr std::size_t kMaxBodyBytes = 1 << 20;
+/// Largest request line plus headers (bytes); more is refused with 431.
+inline constexpr std::size_t kMaxHeaderBytes = 16 * 1024;
+/// Deepest JSON nesting accepted (400 above); nlohmann's recursive dump and copy crash on deep documents.
+inline constexpr int kMaxJsonDepth = codec::kMaxJsonDepth;
+
+/// Worker threads (one per open connection being served) and connections waiting for one; a connection
+/// arriving when kMaxQueuedConnections are already waiting gets 503 at once.
+inline constexpr int kDefaultThreads = 8;
+inline constexpr int kMaxThreads = 256;
+inline constexpr std::size_t kMaxQueuedConnections = 64;
+
+/// Reading one whole request (line, headers and body) must finish within this time, however slowly
+/// the bytes trickle in (a per-read timeout alone lets a client send one byte every few seconds forever).
+inline constexpr std::chrono::milliseconds kRequestReadTimeout{10'000};
+/// Each write of a response must make progress within this time.
+inline constexpr std::chrono::milliseconds kWriteTimeout{10'000};
+/// An idle keep-alive connection is closed after this time, and after this many requests.
+inline constexpr std::chrono::milliseconds kKeepAliveTimeout{5'000};
+inline constexpr std::size_t kKeepAliveMaxRequests = 1000;
+
+}  // namespace softtune::http::limits

@@ -1,0 +1,70 @@
+#include "http/service.h"
+
+#include "codec/problem.h"
+#include "http/router.h"
+
+namespace softtune::http {
+namespace {
+
+std::string_view routing_method(std::string_view method) { return method == "HEAD" ? "GET" : method; }
+
+}  // namespace
+
+Service::Service(ServiceConfig config, std::vector<Route> routes)
+    : config_(std::move(config)), routes_(std::move(routes)) {}
+
+const Route* Service::find(std::string_view method, std::string_view path) const {
+  for (const Route& r : routes_) {
+    if (r.method == routing_method(method) && match_route(r.pattern, path)) return &r;
+  }
+  return nullptr;
+}
+
+std::string_view Service::route_label(std::string_view method, std::string_view path) const {
+  const Route* r = find(method, path);
+  return r ? std::string_view(r->pattern) : std::string_view("unmatched");
+}
+
+void Service::record(std::string_view method, std::string_view path, int status, double seconds) {
+  metrics_.record_request(route_label(method, path), status, seconds);
+}
+
+double Service::uptime_seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+}
+
+HttpResponse Service::handle(HttpRequest request) {
+  try {
+    const std::string_view method = routing_method(request.method);
+    for (const Route& r : routes_) {
+      if (r.method != method) continue;
+      if (auto captures = match_route(r.pattern, request.path)) {
+        request.params = std::move(*captures);
+        return r.handler(request, *this);
+      }
+    }
+    // The path exists under another method: 405 with the methods it has (the static catch-all does
+    // not count, or every unknown POST would be "405, use GET").
+    std::string allow;
+    for (const Route& r : routes_) {
+      if (!is_rest_pattern(r.pattern) && match_route(r.pattern, request.path) && allow.find(r.method) == std::string::npos) {
+        allow += (allow.empty() ? "" : ", ") + r.method;
+      }
+    }
+    if (!allow.empty()) {
+      HttpResponse res = problem_response(codec::Problem(405, "Method not allowed", "method",
+                                                         request.method + " is not allowed here; use " + allow));
+      res.headers.emplace_back("Allow", allow);
+      return res;
+    }
+    throw codec::Problem(404, "Not found", "path", "no route for " + request.method + " " + request.path);
+  } catch (const codec::Problem& p) {
+    return problem_response(p);
+  } catch (const std::exception& e) {
+    return problem_response(codec::Problem(500, "Internal error", "", e.what()));
+  } catch (...) {
+    return problem_response(codec::Problem(500, "Internal error", "", "unknown exception"));
+  }
+}
+
+}  // namespace softtune::http

@@ -1,0 +1,61 @@
+#pragma once
+// The service without the transport: the route table, the one error wrapper, metrics and the
+// configuration the handlers share. The transport turns bytes into HttpRequest, calls handle(), and
+// reports each finished request to record(); tests can call handle() directly.
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "http/http_types.h"
+#include "http/metrics.h"
+
+namespace softtune::http {
+
+class Service;
+
+using Handler = std::function<HttpResponse(const HttpRequest&, Service&)>;
+
+/// One row of the route table: method ("GET", "POST"), pattern (router.h) and handler.
+struct Route {
+  std::string method;
+  std::string pattern;
+  Handler handler;
+};
+
+struct ServiceConfig {
+  std::filesystem::path web_root = "web";  ///< the static page's folder
+};
+
+class Service {
+ public:
+  Service(ServiceConfig config, std::vector<Route> routes);
+
+  /// Routes the request (HEAD as GET) and runs its handler. Never throws: a codec::Problem becomes its
+  /// status as problem+json, any other exception a 500 problem; no route is 404, a wrong method 405.
+  HttpResponse handle(HttpRequest request);
+
+  /// The metrics label of a request: its route's pattern, or "unmatched".
+  std::string_view route_label(std::string_view method, std::string_view path) const;
+
+  /// Counts one answered request in the metrics.
+  void record(std::string_view method, std::string_view path, int status, double seconds);
+
+  const ServiceConfig& config() const { return config_; }
+  const std::vector<Route>& routes() const { return routes_; }
+  Metrics& metrics() { return metrics_; }
+  double uptime_seconds() const;
+
+ private:
+  const Route* find(std::string_view method, std::string_view path) const;
+
+  ServiceConfig config_;
+  std::vector<Route> routes_;
+  Metrics metrics_;
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace softtune::http
