@@ -166,7 +166,8 @@ function sceneFor(state, tune) {
   return {
     name: 'custom',
     world: { fps: Number(state.fps), substeps: Number(state.substeps), duration_s: f > 0 ? Math.min(60, Math.max(1, 5 / f)) : 2 },
-    oscillators: [{ id: 'body', effective_mass: tune.effective_mass, initial_displacement: 1, ...tuningFields(state) }],
+    oscillators: [{ id: 'body', method: state.mode === 'exact' ? 'soft_exact' : 'soft', effective_mass: tune.effective_mass,
+      initial_displacement: 1, ...tuningFields(state) }],
     probes: [{ id: 'body', kind: 'oscillator', oscillator: 'body' }],
   };
 }
@@ -188,11 +189,14 @@ async function runSimulate(state, tune) {
     note.textContent = doc.stages ? `Stages run: ${doc.stages.join(', ')}` : '';
     body.replaceChildren(...(doc.probes ?? []).map((p) => {
       const tr = document.createElement('tr');
-      const cells = [p.id ?? '', p.requested?.frequency_hz, p.measured?.frequency_hz, p.requested?.damping_ratio,
-        p.measured?.damping_ratio, p.measured?.overshoot, p.measured?.settle_frames];
+      const pct = (e) => (e === null || e === undefined ? '—' : `${(100 * e).toFixed(2)} %`);
+      const cells = [p.id ?? '', fmt(p.requested?.frequency_hz), fmt(p.measured?.frequency_hz), pct(p.error?.frequency),
+        fmt(p.requested?.damping_ratio), fmt(p.measured?.damping_ratio), pct(p.error?.damping_ratio),
+        fmt(p.measured?.overshoot), fmt(p.measured?.settle_frames)];
       for (const [i, v] of cells.entries()) {
         const td = document.createElement(i === 0 ? 'th' : 'td');
-        td.textContent = i === 0 ? v : fmt(v);
+        if (i === 0) td.scope = 'row';
+        td.textContent = v;
         tr.append(td);
       }
       return tr;

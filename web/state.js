@@ -92,18 +92,20 @@ export function tuneRequest(state) {
   return JSON.parse(JSON.stringify(q));  // drops undefined fields
 }
 
-const TUNING_KEYS = ['response_frames', 'basis_fps', 'frequency_hz', 'oscillation', 'damping_ratio', 'mode'];
+const TUNING_KEYS = ['response_frames', 'basis_fps', 'frequency_hz', 'oscillation', 'damping_ratio'];
 
 /// A preset scene with the page's step and tuning applied: world fps and substeps, and the designer
-/// fields of every soft joint and oscillator that is tuned in designer units.
+/// fields of every soft joint and oscillator tuned in designer units. An item that names its own `mode`
+/// keeps it (a preset may put standard and exact side by side); the others take the page's mode.
 export function tunedScene(scene, state) {
   const s = structuredClone(scene);
   s.world = { ...s.world, fps: num(state.fps), substeps: num(state.substeps) };
-  const tuning = tuningFields(state);
+  const { mode, ...tuning } = tuningFields(state);
   for (const item of [...(s.joints ?? []), ...(s.oscillators ?? [])]) {
     if (!TUNING_KEYS.some((k) => k in item)) continue;
     for (const k of TUNING_KEYS) delete item[k];
     Object.assign(item, tuning);
+    item.mode ??= mode;
   }
   return JSON.parse(JSON.stringify(s));
 }
