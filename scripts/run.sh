@@ -5,4 +5,4 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh
 scripts/build.sh
 if (($#)); then exec build/softtune "$@"; fi
-exec build/softtune tune --frames 12 --oscillation some --mass 2 --fps 60 --mode exact
+exec build/softtune serve

@@ -268,6 +268,21 @@ class LibraryServer final : public httplib::Server {
     return ret;
   }
 
+  // After a refusal the client may still be sending the body we did not read; closing now would reset
+  // the connection and could destroy the answer before the client reads it. So: send FIN, discard what
+  // still arrives for a moment (bounded in bytes and time), then close.
+  static void lingering_close(int sock) {
+    ::shutdown(sock, SHUT_WR);
+    const Clock::time_point deadline = Clock::now() + std::chrono::milliseconds(500);
+    std::size_t discarded = 0;
+    char buf[16384];
+    while (discarded < 2 * limits::kMaxBodyBytes && wait_for(sock, POLLIN, remaining_ms(deadline)) > 0) {
+      const ssize_t n = ::recv(sock, buf, sizeof buf, 0);
+      if (n <= 0) break;
+      discarded += static_cast<std::size_t>(n);
+    }
+  }
+
   bool serve_connection(int sock) {
     const int one = 1;
     ::setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
@@ -281,7 +296,11 @@ class LibraryServer final : public httplib::Server {
       bool closed = false;
       const bool last = served + 1 == options_.keep_alive_max_requests;
       ret = process_request(stream, last, closed, nullptr);
-      if (!ret || closed || state.close_after || state.head_overflow) break;
+      if (state.close_after || state.head_overflow) {
+        lingering_close(sock);
+        break;
+      }
+      if (!ret || closed) break;
     }
     t_connection = nullptr;
     return ret;
@@ -321,6 +340,8 @@ class LibraryServer final : public httplib::Server {
                                  std::to_string(body.size()) + "\r\n\r\n" + body;
     ::send(sock, response.data(), response.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
     ::shutdown(sock, SHUT_WR);
+    while (wait_for(sock, POLLIN, remaining_ms(deadline)) > 0 && ::recv(sock, buf, sizeof buf, MSG_DONTWAIT) > 0) {
+    }
     const std::string line = head.substr(0, head.find("\r\n"));
     const std::string method = line.substr(0, line.find(' '));
     const std::size_t path_start = line.find(' ') == std::string::npos ? line.size() : line.find(' ') + 1;

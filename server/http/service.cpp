@@ -13,11 +13,28 @@ std::string_view routing_method(std::string_view method) { return method == "HEA
 Service::Service(ServiceConfig config, std::vector<Route> routes)
     : config_(std::move(config)), routes_(std::move(routes)) {}
 
+// Exact patterns first; when the path has routes only under other methods, nothing (405 follows); the
+// static catch-all last, so GET /api/v1/tune is "405, use POST" and not "no such file".
 const Route* Service::find(std::string_view method, std::string_view path) const {
+  method = routing_method(method);
   for (const Route& r : routes_) {
-    if (r.method == routing_method(method) && match_route(r.pattern, path)) return &r;
+    if (!is_rest_pattern(r.pattern) && r.method == method && match_route(r.pattern, path)) return &r;
+  }
+  if (!allowed_methods(path).empty()) return nullptr;
+  for (const Route& r : routes_) {
+    if (is_rest_pattern(r.pattern) && r.method == method && match_route(r.pattern, path)) return &r;
   }
   return nullptr;
+}
+
+std::string Service::allowed_methods(std::string_view path) const {
+  std::string allow;
+  for (const Route& r : routes_) {
+    if (!is_rest_pattern(r.pattern) && match_route(r.pattern, path) && allow.find(r.method) == std::string::npos) {
+      allow += (allow.empty() ? "" : ", ") + r.method;
+    }
+  }
+  return allow;
 }
 
 std::string_view Service::route_label(std::string_view method, std::string_view path) const {
@@ -35,23 +52,11 @@ double Service::uptime_seconds() const {
 
 HttpResponse Service::handle(HttpRequest request) {
   try {
-    const std::string_view method = routing_method(request.method);
-    for (const Route& r : routes_) {
-      if (r.method != method) continue;
-      if (auto captures = match_route(r.pattern, request.path)) {
-        request.params = std::move(*captures);
-        return r.handler(request, *this);
-      }
+    if (const Route* r = find(request.method, request.path)) {
+      request.params = *match_route(r->pattern, request.path);
+      return r->handler(request, *this);
     }
-    // The path exists under another method: 405 with the methods it has (the static catch-all does
-    // not count, or every unknown POST would be "405, use GET").
-    std::string allow;
-    for (const Route& r : routes_) {
-      if (!is_rest_pattern(r.pattern) && match_route(r.pattern, request.path) && allow.find(r.method) == std::string::npos) {
-        allow += (allow.empty() ? "" : ", ") + r.method;
-      }
-    }
-    if (!allow.empty()) {
+    if (const std::string allow = allowed_methods(request.path); !allow.empty()) {
       HttpResponse res = problem_response(codec::Problem(405, "Method not allowed", "method",
                                                          request.method + " is not allowed here; use " + allow));
       res.headers.emplace_back("Allow", allow);

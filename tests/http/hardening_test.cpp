@@ -1,0 +1,229 @@
+// Each hardening item of the transport against a live in-process server: bodies the library would read
+// without a limit (chunked, gzip, no Content-Length, oversized), huge heads, path tricks, deep JSON,
+// a full queue, slow and idle clients. Every test is bounded to a few seconds.
+#include <gtest/gtest.h>
+
+#include "http/limits.h"
+#include "openapi_conformance.h"
+#include "test_server.h"
+
+using nlohmann::json;
+using softtune::http::testing::body_of;
+using softtune::http::testing::quick_options;
+using softtune::http::testing::RawConnection;
+using softtune::http::testing::status_of;
+using softtune::http::testing::TestServer;
+namespace limits = softtune::http::limits;
+
+namespace {
+
+const std::string kTune = R"({"response_frames": 12, "oscillation": "some", "effective_mass": 2})";
+
+// One raw request on a fresh connection; the whole response (the server closes after refusals).
+std::string exchange(int port, const std::string& request) {
+  RawConnection c(port);
+  EXPECT_TRUE(c.connected());
+  c.send(request);
+  return c.receive();
+}
+
+std::string field_of(const std::string& response) { return json::parse(body_of(response))["field"]; }
+
+}  // namespace
+
+TEST(Hardening, ChunkedBodyIsRefusedBeforeItIsRead) {
+  TestServer s;
+  const std::string r = exchange(s.port(), "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\n"
+                                           "Transfer-Encoding: chunked\r\n\r\n" "4\r\n{\"a\"\r\n0\r\n\r\n");
+  EXPECT_EQ(status_of(r), 411);
+  EXPECT_EQ(field_of(r), "Transfer-Encoding");
+  // The library's client sends a body of unknown length chunked.
+  auto client = s.client();
+  auto res = client.Post("/api/v1/tune", [](size_t, httplib::DataSink& sink) {
+    sink.write(kTune.data(), kTune.size());
+    sink.done();
+    return true;
+  }, "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 411);
+}
+
+TEST(Hardening, CompressedBodyIsRefused) {
+  TestServer s;
+  auto client = s.client();
+  client.set_compress(true);  // gzip body with Content-Encoding: gzip
+  auto res = client.Post("/api/v1/tune", kTune, "application/json");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 415);
+  EXPECT_EQ(json::parse(res->body)["field"], "Content-Encoding");
+  EXPECT_EQ(softtune::http::testing::conformance_error("/api/v1/tune", "post", 415, "application/problem+json",
+                                                        json::parse(res->body)), "");
+}
+
+TEST(Hardening, PostWithoutContentLengthIsRefused) {
+  TestServer s;
+  const std::string r = exchange(s.port(), "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\n\r\n" + kTune);
+  EXPECT_EQ(status_of(r), 411);
+  EXPECT_EQ(field_of(r), "Content-Length");
+}
+
+TEST(Hardening, WrongContentTypeIs415) {
+  TestServer s;
+  auto res = s.client().Post("/api/v1/tune", kTune, "text/plain");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 415);
+  EXPECT_EQ(json::parse(res->body)["field"], "Content-Type");
+}
+
+TEST(Hardening, OversizedBodyIs413) {
+  TestServer s;
+  // Announced but never sent: refused from the head alone.
+  const std::string r = exchange(s.port(), "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\n"
+                                           "Content-Length: 1073741824\r\n\r\n");
+  EXPECT_EQ(status_of(r), 413);
+  // Sent, one byte over the limit: the answer comes before the body is read.
+  std::string body = "[" + std::string(limits::kMaxBodyBytes - 1, ' ') + "]";
+  const std::string over = exchange(s.port(), "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\n"
+                                              "Content-Length: " + std::to_string(body.size() + 1) + "\r\n\r\n" + body.substr(0, 4096));
+  EXPECT_EQ(status_of(over), 413);
+  EXPECT_EQ(field_of(over), "Content-Length");
+  // At the limit the body is read and parsed (and refused for what it says, not for its size).
+  body.pop_back();
+  body.back() = ']';
+  auto at_limit = s.client().Post("/api/v1/tune", body.substr(0, limits::kMaxBodyBytes), "application/json");
+  ASSERT_TRUE(at_limit);
+  EXPECT_EQ(at_limit->status, 422);
+}
+
+TEST(Hardening, HugeHeadersAre431) {
+  TestServer s;
+  auto client = s.client();
+  httplib::Headers one_huge = {{"X-Filler", std::string(limits::kMaxHeaderBytes, 'a')}};
+  auto r1 = client.Get("/api/v1/health", one_huge);
+  ASSERT_TRUE(r1);
+  EXPECT_EQ(r1->status, 431);
+  httplib::Headers many;
+  for (int i = 0; i < 40; ++i) many.emplace("X-Filler-" + std::to_string(i), std::string(500, 'b'));
+  auto r2 = client.Get("/api/v1/health", many);
+  ASSERT_TRUE(r2);
+  EXPECT_EQ(r2->status, 431);
+  EXPECT_EQ(json::parse(r2->body)["field"], "headers");
+  auto fine = client.Get("/api/v1/health", {{"X-Small", std::string(1000, 'c')}});
+  ASSERT_TRUE(fine);
+  EXPECT_EQ(fine->status, 200);
+}
+
+TEST(Hardening, PathTricksNeverLeaveTheWebFolder) {
+  TestServer s;
+  for (const char* target : {"/../CMakeLists.txt", "/%2e%2e/CMakeLists.txt", "/..%2fCMakeLists.txt",
+                             "/%2e%2e%2fserver%2fhttp%2flimits.h", "/index.html%00.png", "/..%5cCMakeLists.txt",
+                             "/.%2e/.%2e/etc/passwd", "//etc/passwd", "/%252e%252e/CMakeLists.txt"}) {
+    const std::string r = exchange(s.port(), std::string("GET ") + target + " HTTP/1.1\r\nHost: t\r\nConnection: close\r\n\r\n");
+    EXPECT_TRUE(status_of(r) == 400 || status_of(r) == 404) << target << "\n" << r;
+    EXPECT_EQ(r.find("cmake_minimum_required"), std::string::npos) << target;
+    EXPECT_EQ(r.find("root:"), std::string::npos) << target;
+  }
+}
+
+TEST(Hardening, DeepJsonIsRefusedWithoutCrashing) {
+  TestServer s;
+  const std::string deep = std::string(200000, '[') + std::string(200000, ']');
+  auto r = s.client().Post("/api/v1/tune", deep, "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  EXPECT_NE(json::parse(r->body)["detail"].get<std::string>().find("nesting"), std::string::npos);
+  const std::string nested_field = R"({"constraint": )" + std::string(100, '{') + std::string(100, '}') + "}";
+  auto r2 = s.client().Post("/api/v1/tune", nested_field, "application/json");
+  ASSERT_TRUE(r2);
+  EXPECT_EQ(r2->status, 400);
+  auto alive = s.client().Get("/api/v1/health");
+  ASSERT_TRUE(alive);
+  EXPECT_EQ(alive->status, 200);
+}
+
+TEST(Hardening, GetWithABodyIsRefused) {
+  TestServer s;
+  const std::string r = exchange(s.port(), "GET /api/v1/health HTTP/1.1\r\nHost: t\r\nContent-Length: 5\r\n\r\nhello");
+  EXPECT_EQ(status_of(r), 400);
+}
+
+TEST(Hardening, ARefusedBodyIsNeverParsedAsTheNextRequest) {
+  TestServer s;
+  // The body of a refused request smuggles a second request; the server must close instead of reading it.
+  const std::string smuggled = "GET /metrics HTTP/1.1\r\nHost: t\r\n\r\n";
+  RawConnection c(s.port());
+  c.send("POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: text/plain\r\nContent-Length: " +
+         std::to_string(smuggled.size()) + "\r\n\r\n" + smuggled);
+  const std::string r = c.receive();
+  EXPECT_EQ(status_of(r), 415);
+  EXPECT_TRUE(c.closed());
+  EXPECT_EQ(r.find("HTTP/1.1 200"), std::string::npos) << r;
+}
+
+TEST(Hardening, FullQueueAnswers503) {
+  auto options = quick_options();
+  options.threads = 1;
+  options.max_queued = 1;
+  TestServer s(options);
+  RawConnection holds_the_worker(s.port());
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  RawConnection waits_in_the_queue(s.port());
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  auto res = s.client().Get("/api/v1/health");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 503);
+  EXPECT_EQ(res->get_header_value("Retry-After"), "1");
+  EXPECT_EQ(softtune::http::testing::conformance_error("/api/v1/tune", "post", 503, "application/problem+json",
+                                                        json::parse(res->body)), "");
+  // Once the worker is free again, requests are served.
+  holds_the_worker.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(status_of(holds_the_worker.receive()), 200);
+  waits_in_the_queue.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(status_of(waits_in_the_queue.receive()), 200);
+}
+
+TEST(Hardening, SlowClientIsCutOffAtTheRequestDeadline) {
+  auto options = quick_options();
+  options.request_read_timeout = std::chrono::milliseconds(500);
+  TestServer s(options);
+  RawConnection slow(s.port());
+  ASSERT_TRUE(slow.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\n"));
+  // One header byte every 100 ms: each read succeeds quickly, only the whole-request deadline stops it.
+  const auto start = std::chrono::steady_clock::now();
+  std::string got;
+  while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(3000)) {
+    if (!slow.send("X")) break;
+    got += slow.receive(std::chrono::milliseconds(100));
+    if (slow.closed()) break;
+  }
+  EXPECT_TRUE(slow.closed()) << "still open after 3 s";
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(2000));
+}
+
+TEST(Hardening, IdleKeepAliveConnectionsAreClosed) {
+  auto options = quick_options();
+  options.keep_alive_timeout = std::chrono::milliseconds(300);
+  TestServer s(options);
+  RawConnection idle(s.port());
+  ASSERT_TRUE(idle.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\n\r\n"));
+  const auto start = std::chrono::steady_clock::now();
+  const std::string r = idle.receive(std::chrono::milliseconds(2000));
+  EXPECT_EQ(status_of(r), 200);
+  EXPECT_TRUE(idle.closed());
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(1500));
+}
+
+TEST(Hardening, KeepAliveConnectionsServeALimitedNumberOfRequests) {
+  auto options = quick_options();
+  options.keep_alive_max_requests = 3;
+  TestServer s(options);
+  RawConnection c(s.port());
+  std::string all;
+  for (int i = 0; i < 3; ++i) c.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\n\r\n");
+  all = c.receive(std::chrono::milliseconds(1000));
+  std::size_t responses = 0;
+  for (std::size_t at = all.find("HTTP/1.1 200"); at != std::string::npos; at = all.find("HTTP/1.1 200", at + 1)) ++responses;
+  EXPECT_EQ(responses, 3u);
+  EXPECT_TRUE(c.closed());
+  EXPECT_NE(all.find("Connection: close"), std::string::npos);
+}

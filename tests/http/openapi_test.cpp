@@ -1,0 +1,142 @@
+// The OpenAPI document itself: the embedded bytes are the file's, every route is documented and every
+// documented path is served, the limits are those of http/limits.h, every $ref resolves, and the
+// schemas agree with the tune codec on real requests and responses.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "codec/problem.h"
+#include "codec/tune_codec.h"
+#include "http/limits.h"
+#include "http/routes.h"
+#include "openapi_conformance.h"
+
+using nlohmann::json;
+using softtune::http::testing::conformance_error;
+using softtune::http::testing::openapi_document;
+
+namespace {
+
+std::string openapi_key(std::string pattern) {
+  const std::size_t rest = pattern.find("...}");
+  if (rest != std::string::npos) pattern.erase(rest, 3);
+  return pattern;
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+void collect_refs(const json& node, std::vector<std::string>& out) {
+  if (node.is_object()) {
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      if (it.key() == "$ref" && it->is_string()) out.push_back(*it);
+      else collect_refs(*it, out);
+    }
+  } else if (node.is_array()) {
+    for (const auto& e : node) collect_refs(e, out);
+  }
+}
+
+const json& tune_request_schema() { return openapi_document()["components"]["schemas"]["TuneRequest"]; }
+
+std::string request_error(const json& request) {
+  auto e = softtune::codec::validate_json_schema(request, tune_request_schema(), openapi_document());
+  return e ? e->pointer + " " + e->rule : "";
+}
+
+}  // namespace
+
+TEST(OpenApi, EmbeddedBytesAreTheSourceFile) {
+  std::ifstream in(SOFTTUNE_SOURCE_DIR "/server/http/openapi.json", std::ios::binary);
+  ASSERT_TRUE(in);
+  const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(softtune::http::openapi_text(), file);
+  EXPECT_EQ(openapi_document()["openapi"], "3.1.0");
+}
+
+TEST(OpenApi, DocumentsExactlyTheRoutesServed) {
+  const json& paths = openapi_document()["paths"];
+  std::size_t operations = 0;
+  for (const auto& route : softtune::http::service_routes()) {
+    const std::string key = openapi_key(route.pattern);
+    EXPECT_TRUE(paths.contains(key) && paths[key].contains(lower(route.method)))
+        << route.method << " " << route.pattern << " has no OpenAPI entry";
+    ++operations;
+  }
+  std::size_t documented = 0;
+  for (const auto& [path, item] : paths.items()) documented += item.size();
+  EXPECT_EQ(documented, operations) << "the document lists an operation no route serves";
+}
+
+TEST(OpenApi, LimitsAreThoseOfTheServer) {
+  namespace l = softtune::http::limits;
+  const json& x = openapi_document()["info"]["x-softtune-limits"];
+  EXPECT_EQ(x["max_body_bytes"], l::kMaxBodyBytes);
+  EXPECT_EQ(x["max_header_bytes"], l::kMaxHeaderBytes);
+  EXPECT_EQ(x["max_json_depth"], l::kMaxJsonDepth);
+  EXPECT_EQ(x["default_threads"], l::kDefaultThreads);
+  EXPECT_EQ(x["max_threads"], l::kMaxThreads);
+  EXPECT_EQ(x["max_queued_connections"], l::kMaxQueuedConnections);
+  EXPECT_EQ(x["request_read_timeout_ms"], l::kRequestReadTimeout.count());
+  EXPECT_EQ(x["write_timeout_ms"], l::kWriteTimeout.count());
+  EXPECT_EQ(x["keep_alive_timeout_ms"], l::kKeepAliveTimeout.count());
+  EXPECT_EQ(x["keep_alive_max_requests"], l::kKeepAliveMaxRequests);
+  EXPECT_EQ(x.size(), 10u) << "a limit is documented that this test does not check";
+}
+
+TEST(OpenApi, EveryRefResolves) {
+  std::vector<std::string> refs;
+  collect_refs(openapi_document(), refs);
+  EXPECT_FALSE(refs.empty());
+  for (const std::string& ref : refs) {
+    ASSERT_EQ(ref.rfind("#/", 0), 0u) << ref;
+    EXPECT_TRUE(openapi_document().contains(json::json_pointer(ref.substr(1)))) << ref;
+  }
+}
+
+TEST(OpenApi, TuneSchemasAgreeWithTheCodec) {
+  const json example = openapi_document()["paths"]["/api/v1/tune"]["post"]["requestBody"]["content"]["application/json"]["example"];
+  const std::vector<json> requests = {
+      example,
+      json::parse(R"({"frequency_hz": 25, "damping_ratio": 0, "effective_mass": 1, "fps": 60, "mode": "exact"})"),
+      json::parse(R"({"frequency_hz": 40, "oscillation": "free", "effective_mass": 1, "fps": 60, "mode": "exact"})"),
+      json::parse(R"({"response_frames": 8, "basis_fps": 30, "oscillation": "none", "fps": 120, "substeps": 4,
+                      "constraint": {"dimension": 2, "type": "linear", "body_a": {"mass": 3, "inertia": 0.5},
+                                     "body_b": "static", "anchor_a": [0.5, 0], "anchor_b": [1, 0], "axis": [0, 2]}})"),
+      json::parse(R"({"response_frames": 10, "oscillation": "some", "constraint": {"dimension": 3, "type": "angular",
+                      "body_a": {"mass": 2, "inertia": [[1, 0, 0], [0, 2, 0], [0, 0, 3]]}, "body_b": "static",
+                      "axis": [0, 0, 1]}})"),
+  };
+  for (const json& request : requests) {
+    EXPECT_EQ(request_error(request), "") << request.dump();
+    const json response = softtune::codec::run_tune(request);
+    EXPECT_EQ(conformance_error("/api/v1/tune", "post", 200, "application/json", response), "") << request.dump();
+  }
+}
+
+TEST(OpenApi, TuneRequestSchemaRefusesWhatTheCodecRefuses) {
+  const std::vector<json> bad = {
+      json::parse(R"({"response_frames": 12, "oscillation": "some", "effective_mass": 2, "fps": 0})"),
+      json::parse(R"({"response_frames": 12, "oscillation": "sometimes", "effective_mass": 2})"),
+      json::parse(R"({"response_frames": 12, "oscillation": "some", "effective_mass": -1})"),
+      json::parse(R"({"response_frames": 12, "oscillation": "some", "effective_mass": 2, "substeps": 1.5})"),
+      json::parse(R"({"response_frames": 12, "oscillation": "some", "effective_mass": 2, "colour": "red"})"),
+  };
+  for (const json& request : bad) {
+    EXPECT_NE(request_error(request), "") << request.dump();
+    EXPECT_THROW(softtune::codec::run_tune(request), softtune::codec::Problem) << request.dump();
+  }
+}
+
+TEST(OpenApi, ProblemsConform) {
+  try {
+    softtune::codec::run_tune(json::parse(R"({"response_frames": 12, "oscillation": "some"})"));
+    FAIL() << "expected a Problem";
+  } catch (const softtune::codec::Problem& p) {
+    EXPECT_EQ(conformance_error("/api/v1/tune", "post", 422, "application/problem+json", softtune::codec::problem_json(p)), "");
+  }
+}

@@ -1,0 +1,61 @@
+#include "http/request_policy.h"
+
+#include <gtest/gtest.h>
+
+#include "http/limits.h"
+
+using softtune::http::check_request_head;
+using softtune::http::HttpRequest;
+
+namespace {
+
+HttpRequest head(std::string method, std::initializer_list<std::pair<const char*, std::string>> headers) {
+  HttpRequest r;
+  r.method = std::move(method);
+  r.path = "/api/v1/tune";
+  for (const auto& [k, v] : headers) r.headers.emplace(k, v);
+  return r;
+}
+
+// "status field" of the refusal, or "ok".
+std::string verdict(const HttpRequest& r) {
+  auto p = check_request_head(r);
+  return p ? std::to_string(p->status) + " " + p->field : "ok";
+}
+
+}  // namespace
+
+TEST(RequestPolicy, AcceptsAJsonPostWithALength) {
+  EXPECT_EQ(verdict(head("POST", {{"Content-Type", "application/json"}, {"Content-Length", "17"}})), "ok");
+  EXPECT_EQ(verdict(head("POST", {{"content-type", "Application/JSON; charset=utf-8"}, {"content-length", "2"}})), "ok");
+  EXPECT_EQ(verdict(head("GET", {})), "ok");
+  EXPECT_EQ(verdict(head("GET", {{"Content-Length", "0"}})), "ok");
+}
+
+TEST(RequestPolicy, RefusesBodiesTheLibraryWouldReadWithoutALimit) {
+  EXPECT_EQ(verdict(head("POST", {{"Content-Type", "application/json"}, {"Transfer-Encoding", "chunked"}})),
+            "411 Transfer-Encoding");
+  EXPECT_EQ(verdict(head("POST", {{"Content-Type", "application/json"}, {"Content-Length", "20"},
+                                  {"Content-Encoding", "gzip"}})),
+            "415 Content-Encoding");
+  EXPECT_EQ(verdict(head("POST", {{"Content-Type", "application/json"}})), "411 Content-Length");
+  EXPECT_EQ(verdict(head("PUT", {{"Content-Type", "application/json"}})), "411 Content-Length");
+}
+
+TEST(RequestPolicy, LimitsTheBodySize) {
+  const auto limit = std::to_string(softtune::http::limits::kMaxBodyBytes);
+  const auto over = std::to_string(softtune::http::limits::kMaxBodyBytes + 1);
+  EXPECT_EQ(verdict(head("POST", {{"Content-Type", "application/json"}, {"Content-Length", limit}})), "ok");
+  EXPECT_EQ(verdict(head("POST", {{"Content-Type", "application/json"}, {"Content-Length", over}})), "413 Content-Length");
+  EXPECT_EQ(verdict(head("POST", {{"Content-Type", "application/json"}, {"Content-Length", "99999999999999999999999"}})),
+            "400 Content-Length");
+  EXPECT_EQ(verdict(head("POST", {{"Content-Type", "application/json"}, {"Content-Length", "-1"}})), "400 Content-Length");
+  EXPECT_EQ(verdict(head("POST", {{"Content-Type", "application/json"}, {"Content-Length", "12abc"}})), "400 Content-Length");
+}
+
+TEST(RequestPolicy, NeedsJsonBodiesAndBodilessGets) {
+  EXPECT_EQ(verdict(head("POST", {{"Content-Type", "text/plain"}, {"Content-Length", "2"}})), "415 Content-Type");
+  EXPECT_EQ(verdict(head("POST", {{"Content-Length", "2"}})), "415 Content-Type");
+  EXPECT_EQ(verdict(head("POST", {{"Content-Type", "application/jsonx"}, {"Content-Length", "2"}})), "415 Content-Type");
+  EXPECT_EQ(verdict(head("GET", {{"Content-Length", "5"}})), "400 Content-Length");
+}
