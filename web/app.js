@@ -209,9 +209,11 @@ async function runSimulate(state, tune) {
   }
 }
 
+/// The accuracy run's recommendation in words: its own `reason` sentence when it gives one.
 function describe(recommendation) {
   if (recommendation === null || recommendation === undefined) return 'No configuration meets the error budget.';
   if (typeof recommendation !== 'object') return String(recommendation);
+  if (recommendation.reason) return recommendation.reason;
   return Object.entries(recommendation).map(([k, v]) => `${k.replaceAll('_', ' ')}: ${typeof v === 'number' ? fmt(v) : v}`).join(', ');
 }
 
@@ -227,7 +229,7 @@ async function runAccuracy(request) {
     const doc = await tracked(channels.accuracy.run((signal) => callJson('POST', 'api/v1/accuracy', request, signal)));
     if (doc === Latest.stale) return;
     drawWorkPrecision(el, doc.rows ?? []);
-    note.textContent = `Cheapest within the error budget: ${describe(doc.recommendation)}`;
+    note.textContent = `Recommendation: ${describe(doc.recommendation)}`;
   } catch (e) {
     if (!(e instanceof ApiError)) throw e;
     showUnavailable(el, e.unavailable ? unavailable('The work-precision chart (POST /api/v1/accuracy)')

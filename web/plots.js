@@ -28,7 +28,7 @@ function draw(el, opts, data) {
   el.classList.remove('unavailable');
   const chart = new uPlot({ width: width(el), height: height(el), ...opts }, data, el);
   charts.set(el, chart);
-  el.dataset.points = String(data.length > 1 ? (opts.mode === 2 ? data[1][0].length : data[0].length) : 0);
+  el.dataset.points = String(data[0].length);
 }
 
 export function showUnavailable(el, text) {
@@ -96,18 +96,22 @@ export function drawWorkPrecision(el, rows) {
     showUnavailable(el, 'Every configuration the accuracy run tried blew up or took no measurable time.');
     return;
   }
+  // One shared x (every measured CPU time) with each method's points at its own times and gaps elsewhere,
+  // joined across the gaps: uPlot's aligned mode, which also draws the point markers.
   const names = [...byMethod.keys()];
-  const data = [null, ...names.map((m) => {
-    const pts = byMethod.get(m).sort((a, b) => a.cpu_seconds_per_sim_second - b.cpu_seconds_per_sim_second);
-    return [pts.map((p) => p.cpu_seconds_per_sim_second), pts.map((p) => p.max_error)];
-  })];
+  const xs = [...new Set([...byMethod.values()].flat().map((r) => r.cpu_seconds_per_sim_second))].sort((a, b) => a - b);
+  const column = new Map(xs.map((x, i) => [x, i]));
+  const ys = names.map((m) => {
+    const y = new Array(xs.length).fill(null);
+    for (const r of byMethod.get(m)) y[column.get(r.cpu_seconds_per_sim_second)] = r.max_error;
+    return y;
+  });
   draw(el, {
-    mode: 2,
     scales: { x: { time: false, distr: 3 }, y: { distr: 3 } },
     axes: [{ label: 'CPU s per simulated s', values: logAxis }, { label: 'max error', values: logAxis, size: 60 }],
-    series: [{}, ...names.map((m) => ({
-      label: METHOD_LABELS[m] ?? m, stroke: COLORS[m] ?? '#555', width: 1.5,
-      points: { show: true, size: 6, fill: COLORS[m] ?? '#555' },
+    series: [{ label: 'CPU s' }, ...names.map((m) => ({
+      label: METHOD_LABELS[m] ?? m.replaceAll('_', ' '), stroke: COLORS[m] ?? '#555', width: 1.5, spanGaps: true,
+      points: { show: true, size: 7, fill: COLORS[m] ?? '#555' },
     }))],
-  }, data);
+  }, [xs, ...ys]);
 }
