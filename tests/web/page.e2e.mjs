@@ -206,6 +206,18 @@ test('the page shows the API numbers, follows the controls, restores a shared UR
   assert.equal(await reloaded.getByLabel('none', { exact: true }).isChecked(), false);
   await expectNumbers(reloaded, shared);
 
+  // The suggested fix works: explicit Euler is unstable at 30 fps (h > 2 zeta / omega); taking the
+  // substeps it names makes it stable.
+  const explicit = reloaded.locator('#stability tr[data-method="explicit_euler"]');
+  assert.equal(await explicit.locator('td').nth(0).textContent(), 'unstable');
+  const fix = await explicit.getByTestId('fix').textContent();
+  const needed = Number(fix.match(/needs (\d+) substeps/)?.[1]);
+  assert.ok(needed > 1, `fix "${fix}" names a substep count`);
+  await reloaded.locator('#substeps').fill(String(needed));
+  await settled(reloaded);
+  await expectNumbers(reloaded, { ...shared, substeps: needed });
+  assert.equal(await explicit.locator('td').nth(0).textContent(), 'stable');
+
   // An API error appears next to the field it names. Chromium logs the refused request itself (a 422 of
   // api/v1/tune); that one is expected, every other console error fails the test.
   const errorsBefore = consoleErrors.length;
