@@ -2,6 +2,7 @@
 // again (debounced; only the newest answer is shown), and each panel says so plainly when this server
 // lacks its route. Hooks for tests and tools: data-testid on values, plots and the preview image, and
 // body[data-pending] = requests in flight.
+import { buildBodies } from './bodies.js';
 import { ApiError, Latest, callJson, debounce, hasRoute, loadRoutes } from './api.js';
 import { responseSeries } from './oscillator.js';
 import { drawError, drawResponse, drawWorkPrecision, showUnavailable } from './plots.js';
@@ -17,6 +18,8 @@ const results = document.getElementById('results');
 const status = document.getElementById('status');
 const $ = (id) => document.getElementById(id);
 const player = new PreviewPlayer($('preview-panel'));
+
+buildBodies($('bodies'), $('body-template'));
 
 /// The defaults are the values written in index.html; the URL carries only what differs from them.
 const DEFAULTS = readForm(form);
