@@ -228,6 +228,9 @@ test('the page shows the API numbers, follows the controls, restores a shared UR
   assert.equal(status, 422);
   assert.equal(doc.field, 'effective_mass');
   assert.equal(message, doc.detail);
+  // The long status message must not squeeze the results column (1280 - 360 px of controls - margins).
+  const resultsWidth = await reloaded.evaluate(() => document.getElementById('results').getBoundingClientRect().width);
+  assert.ok(resultsWidth > 800, `results column ${resultsWidth} px wide`);
   const logged = consoleErrors.splice(errorsBefore);
   assert.ok(logged.every((m) => /status of 422 .*api\/v1\/tune$/.test(m)), logged.join('\n'));
   await reloaded.close();
