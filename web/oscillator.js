@@ -20,8 +20,10 @@ export const METHOD_LABELS = {
 
 /// Past this |x| (x0 = 1) a trajectory has blown up; later samples are left out of the plots (null).
 export const BLOWUP_LIMIT = 1e6;
-/// At most this many steps are replayed, so a tiny step never freezes the page.
-export const MAX_STEPS = 4000;
+/// Samples kept per curve: a long run at a small step is replayed in full but drawn every `stride` steps.
+export const MAX_SAMPLES = 4000;
+/// Steps replayed at most (a few tens of ms in a browser), so no step size can freeze the page.
+export const MAX_STEPS = 2e7;
 
 /// Position x(t) of m x'' + c x' + k x = 0 from x(0) = x0, x'(0) = v0, for natural angular frequency
 /// omega (rad/s) and damping ratio zeta (SPEC.md 1; under-damped: decaying cosine/sine at
@@ -42,18 +44,21 @@ export function analyticPosition(x0, v0, omega, zeta, t) {
   return a * Math.exp(r1 * t) + (x0 - a) * Math.exp(r2 * t);
 }
 
-/// x_n for n = 0..steps of the linear map [x, v] <- A [x, v] from (x0, v0); null once |x| passes
-/// BLOWUP_LIMIT or stops being finite (and for every later step).
-export function replay(matrix, x0, v0, steps) {
+/// x_(n stride) for n = 0..samples of the linear map [x, v] <- A [x, v] from (x0, v0), every step taken;
+/// null once |x| passes BLOWUP_LIMIT or stops being finite (and for every later sample).
+export function replay(matrix, x0, v0, samples, stride = 1) {
   const [[a, b], [c, d]] = matrix;
-  const out = new Array(steps + 1);
+  const out = new Array(samples + 1);
   let x = x0, v = v0, blown = false;
-  for (let n = 0; n <= steps; ++n) {
+  for (let n = 0; n <= samples; ++n) {
     if (!blown && !(Math.abs(x) <= BLOWUP_LIMIT)) blown = true;
     out[n] = blown ? null : x;
-    const x1 = a * x + b * v;
-    v = c * x + d * v;
-    x = x1;
+    if (blown) continue;
+    for (let k = 0; k < stride; ++k) {
+      const x1 = a * x + b * v;
+      v = c * x + d * v;
+      x = x1;
+    }
   }
   return out;
 }
@@ -69,20 +74,22 @@ export function plotDuration(frequencyHz) {
 }
 
 /// Plot data from a tune response: {t, exact, methods: {name: x[]}, error: {name: |x - exact|[]},
-/// truncated}. Methods whose step matrix is missing (or not finite) are left out.
+/// stride, truncated}. Methods whose step matrix is missing (or not finite) are left out.
 export function responseSeries(tune) {
   const h = tune.h;
   const omega = tune.omega ?? 0;
   const zeta = tune.damping_ratio ?? 0;
   const wanted = Math.ceil(plotDuration(tune.requested?.frequency_hz ?? tune.frequency_hz ?? 0) / h);
   const steps = Math.max(1, Math.min(MAX_STEPS, wanted));
-  const t = Array.from({ length: steps + 1 }, (_, n) => n * h);
+  const stride = Math.ceil(steps / MAX_SAMPLES);
+  const samples = Math.floor(steps / stride);
+  const t = Array.from({ length: samples + 1 }, (_, n) => n * stride * h);
   const exact = t.map((ti) => analyticPosition(1, 0, omega, zeta, ti));
   const methods = {}, error = {};
   for (const name of METHODS) {
     const matrix = tune.stability?.[name]?.step_matrix;
     if (!usableMatrix(matrix)) continue;
-    const xs = replay(matrix, 1, 0, steps);
+    const xs = replay(matrix, 1, 0, samples, stride);
     methods[name] = xs;
     // Log-scale plot: an exact zero (t = 0) has no place on it, so it is left out.
     error[name] = xs.map((x, n) => {
@@ -91,5 +98,5 @@ export function responseSeries(tune) {
       return e > 0 ? e : null;
     });
   }
-  return { t, exact, methods, error, truncated: wanted > MAX_STEPS };
+  return { t, exact, methods, error, stride, truncated: wanted > MAX_STEPS };
 }
