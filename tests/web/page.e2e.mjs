@@ -147,6 +147,11 @@ test('the page shows the API numbers, follows the controls, restores a shared UR
   for (const id of ['plot-response', 'plot-error']) {
     assert.ok(Number(await page.getByTestId(id).getAttribute('data-points')) > 10, `${id} has data`);
   }
+  // Every control has a label (or an aria-label) a screen reader and a click can use.
+  const unlabelled = await page.locator('input, select, button').evaluateAll((els) =>
+    els.filter((e) => !(e.labels?.length || e.getAttribute('aria-label') || (e.tagName === 'BUTTON' && e.textContent.trim())))
+      .map((e) => e.name || e.id || e.outerHTML));
+  assert.deepEqual(unlabelled, []);
   // The response plot: the exact motion and the five methods.
   assert.equal(await page.getByTestId('plot-response').locator('.u-legend .u-series').count(), 7);
 
