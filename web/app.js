@@ -241,11 +241,13 @@ async function runAccuracy(request) {
   }
 }
 
+/// The preview contract (render README, "Preview frames"): a preset name plus the tuning fields of
+/// `softtune tune`, with `frames` the number of frames to render. A custom body previews as the 1-D
+/// oscillator with the effective mass the tune answer computed (from the mass or the 2-D constraint).
 function previewRequest(state, tune) {
-  const settings = { frames: PREVIEW_FRAMES, size: PREVIEW_SIZE };
-  if (state.preset) return { ...sceneFor(state, tune), ...settings };
   const { constraint, ...fields } = tuneRequest(state);
-  return { preset: 'oscillator', ...fields, effective_mass: tune.effective_mass, ...settings };
+  return { preset: state.preset || 'oscillator', ...fields, effective_mass: tune.effective_mass,
+    frames: PREVIEW_FRAMES, size: PREVIEW_SIZE };
 }
 
 async function runPreview(state, tune) {
