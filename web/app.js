@@ -161,7 +161,7 @@ function unavailable(what) {
   return `${what} is not available on this server.`;
 }
 
-/// The scene to simulate or preview: the picked preset with the page's step and tuning, or a 1-D
+/// The scene to simulate: the picked preset with the page's step and tuning, or a 1-D
 /// oscillator with the effective mass the tune answer computed (from the mass or the 2-D constraint).
 function sceneFor(state, tune) {
   if (state.preset) return presetScene ? tunedScene(presetScene, state) : { preset: state.preset };
@@ -331,6 +331,7 @@ async function loadPreset(name, adopt) {
     const doc = await tracked(callJson('GET', `api/v1/presets/${encodeURIComponent(name)}`));
     if ($('preset').value !== name) return;
     presetScene = doc.scene ?? doc;
+    // The numbers above tune the body in the controls; the simulation and preview run the preset's own bodies.
     note.textContent = presetScene.description ?? '';
     if (adopt) {
       writeForm(form, stateFromScene(presetScene));

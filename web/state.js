@@ -128,7 +128,7 @@ export function stateFromScene(scene) {
     out.osc = '';
     out.zeta = String(tuned.damping_ratio);
   }
-  if (tuned.mode) out.mode = tuned.mode;
+  out.mode = tuned.mode ?? 'standard';
   if (tuned.effective_mass !== undefined) {
     out.body = 'mass';
     out.mass = String(tuned.effective_mass);

@@ -64,7 +64,7 @@ test('a preset takes the page step and tuning, keeping a mode an item names itse
     ],
   };
   const seeded = stateFromScene(scene);
-  assert.deepEqual(seeded, { fps: '60', substeps: '1', basis: '60', frames: '30', osc: 'some', zeta: '0.5', body: 'mass', mass: '2' });
+  assert.deepEqual(seeded, { fps: '60', substeps: '1', basis: '60', frames: '30', osc: 'some', zeta: '0.5', mode: 'standard', body: 'mass', mass: '2' });
   const out = tunedScene(scene, { ...DEFAULTS, frames: '20', osc: '', zeta: '0.3', fps: '120', substeps: '2' });
   assert.deepEqual(out.world, { fps: 120, duration_s: 3, substeps: 2 });
   assert.deepEqual(out.oscillators[0], { id: 'a', effective_mass: 2, response_frames: 20, basis_fps: 60, damping_ratio: 0.3, mode: 'standard' });
