@@ -44,7 +44,14 @@ export async function callJson(method, url, body, signal) {
     init.body = JSON.stringify(body);
     init.headers['Content-Type'] = 'application/json';
   }
-  const r = await fetch(url, init);
+  let r;
+  try {
+    r = await fetch(url, init);
+  } catch (e) {
+    if (e?.name === 'AbortError') throw e;
+    // No answer at all (server stopped, network down): status 0, shown like any other refusal.
+    throw new ApiError(0, { title: 'Cannot reach the softtune server', detail: `Cannot reach the softtune server (${e.message})` });
+  }
   const text = await r.text();
   let doc = null;
   try {

@@ -124,7 +124,7 @@ async function runTune() {
     if (!(e instanceof ApiError)) throw e;
     clearErrors();
     showProblem(e);
-    status.dataset.error = `The API refused this tuning: ${e.message}`;
+    status.dataset.error = e.status === 0 ? e.message : `The API refused this tuning: ${e.message}`;
     busy(0);
     return;
   }
