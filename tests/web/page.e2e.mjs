@@ -91,7 +91,7 @@ async function routes() {
 }
 
 async function openPage(url, viewport = { width: 1280, height: 800 }) {
-  const page = await browser.newPage({ viewport });
+  const page = await browser.newPage({ viewport, permissions: ['clipboard-read', 'clipboard-write'] });
   page.on('console', (m) => { if (m.type() === 'error') consoleErrors.push(`${m.text()} @ ${m.location().url}`); });
   page.on('pageerror', (e) => consoleErrors.push(String(e)));
   await page.goto(url);
@@ -154,6 +154,12 @@ test('the page shows the API numbers, follows the controls, restores a shared UR
   assert.deepEqual(unlabelled, []);
   // The response plot: the exact motion and the five methods.
   assert.equal(await page.getByTestId('plot-response').locator('.u-legend .u-series').count(), 7);
+
+  // Each engine's copy button puts its settings, at full precision, on the clipboard.
+  await page.locator('#engines tr[data-engine="box2d_v2_4"] button').click();
+  const copied = await page.evaluate(() => navigator.clipboard.readText());
+  assert.ok(copied.includes(`jointDef.stiffness = ${tune.engines.box2d_v2_4.stiffness};`), copied);
+  assert.ok(copied.includes(`jointDef.damping = ${tune.engines.box2d_v2_4.damping};`), copied);
 
   const responseBefore = await canvas(page, 'plot-response');
   const errorBefore = await canvas(page, 'plot-error');
