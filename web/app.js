@@ -5,7 +5,7 @@
 import { buildBodies } from './bodies.js';
 import { ApiError, Latest, callJson, debounce, hasRoute, loadRoutes } from './api.js';
 import { responseSeries } from './oscillator.js';
-import { drawError, drawResponse, drawWorkPrecision, showUnavailable } from './plots.js';
+import { drawError, drawResponse, drawSimulation, drawWorkPrecision, showUnavailable } from './plots.js';
 import { PreviewPlayer } from './preview.js';
 import { copyText, fmt, showEngines, showNumbers, showStability } from './results.js';
 import {
@@ -179,7 +179,9 @@ async function runSimulate(state, tune) {
   const note = $('simulate-note');
   const body = $('probes').querySelector('tbody');
   const table = $('probes').closest('.scroll');
+  const figure = $('simulation-figure');
   table.hidden = false;
+  figure.hidden = true;
   if (!hasRoute('POST', '/api/v1/simulate')) {
     note.textContent = unavailable('Simulation');
     body.replaceChildren();
@@ -190,6 +192,8 @@ async function runSimulate(state, tune) {
     const doc = await tracked(channels.simulate.run((signal) => callJson('POST', 'api/v1/simulate', sceneFor(state, tune), signal)));
     if (doc === Latest.stale) return;
     note.textContent = doc.stages ? `Stages run: ${doc.stages.join(', ')}` : '';
+    figure.hidden = false;
+    drawSimulation($('plot-simulation'), doc.probes ?? []);
     body.replaceChildren(...(doc.probes ?? []).map((p) => {
       const tr = document.createElement('tr');
       const pct = (e) => (e === null || e === undefined ? '—' : `${(100 * e).toFixed(2)} %`);

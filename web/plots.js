@@ -96,16 +96,8 @@ export function drawWorkPrecision(el, rows) {
     showUnavailable(el, 'Every configuration the accuracy run tried blew up or took no measurable time.');
     return;
   }
-  // One shared x (every measured CPU time) with each method's points at its own times and gaps elsewhere,
-  // joined across the gaps: uPlot's aligned mode, which also draws the point markers.
   const names = [...byMethod.keys()];
-  const xs = [...new Set([...byMethod.values()].flat().map((r) => r.cpu_seconds_per_sim_second))].sort((a, b) => a - b);
-  const column = new Map(xs.map((x, i) => [x, i]));
-  const ys = names.map((m) => {
-    const y = new Array(xs.length).fill(null);
-    for (const r of byMethod.get(m)) y[column.get(r.cpu_seconds_per_sim_second)] = r.max_error;
-    return y;
-  });
+  const [xs, ...ys] = aligned(names.map((m) => byMethod.get(m).map((r) => [r.cpu_seconds_per_sim_second, r.max_error])));
   draw(el, {
     scales: { x: { time: false, distr: 3 }, y: { distr: 3 } },
     axes: [{ label: 'CPU s per simulated s', values: logAxis }, { label: 'max error', values: logAxis, size: 60 }],
@@ -114,4 +106,36 @@ export function drawWorkPrecision(el, rows) {
       points: { show: true, size: 7, fill: COLORS[m] ?? '#555' },
     }))],
   }, [xs, ...ys]);
+}
+
+/// uPlot's aligned data from curves sampled at different x: one shared, sorted x (every x of every curve)
+/// and each curve's y at its own x, null elsewhere (the series join across the gaps with spanGaps).
+export function aligned(curves) {
+  const xs = [...new Set(curves.flatMap((c) => c.map(([x]) => x)))].sort((a, b) => a - b);
+  const column = new Map(xs.map((x, i) => [x, i]));
+  return [xs, ...curves.map((c) => {
+    const y = new Array(xs.length).fill(null);
+    for (const [x, v] of c) y[column.get(x)] = v;
+    return y;
+  })];
+}
+
+const PROBE_COLORS = ['#1f6feb', '#d1242f', '#1a7f37', '#bf8700', '#8250df', '#0a7ea4', '#cf222e', '#57606a'];
+
+/// The simulation's probes over time (POST /api/v1/simulate `probes[].series`), one line per probe.
+export function drawSimulation(el, probes) {
+  resize.observe(el);
+  const withSeries = probes.filter((p) => Array.isArray(p.series?.time) && p.series.time.length > 1);
+  if (withSeries.length === 0) {
+    showUnavailable(el, 'This simulation returned no probe series to draw.');
+    return;
+  }
+  const curves = withSeries.map((p) => p.series.time.map((t, i) => [t, p.series.value[i]]).filter(([t]) => t !== null));
+  draw(el, {
+    scales: { x: { time: false } },
+    axes: [{ label: 'time (s)', values: fmtAxis(3) }, { label: 'probe value', values: fmtAxis(3), size: 60 }],
+    series: [{ label: 't (s)' }, ...withSeries.map((p, i) => ({
+      label: p.id, stroke: PROBE_COLORS[i % PROBE_COLORS.length], width: 1.5, spanGaps: true,
+    }))],
+  }, aligned(curves));
 }
