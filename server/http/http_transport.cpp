@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cerrno>
 #include <condition_variable>
 #include <cstdio>
 #include <deque>
@@ -45,6 +46,7 @@ struct ConnectionState {
   bool head_done = false;      ///< the pre-routing hook ran: what follows is body
   bool head_overflow = false;  ///< the head outgrew limits::kMaxHeaderBytes
   bool close_after = false;    ///< answer, then close (the body was left unread)
+  std::string_view route;      ///< the route pattern that answered (metrics label), empty if none ran
 };
 thread_local ConnectionState* t_connection = nullptr;
 // Set while the accept thread runs a connection that found the queue full: it gets 503 at once.
@@ -102,10 +104,14 @@ class LimitedStream final : public httplib::Stream {
     return wait_for(sock_, POLLOUT, static_cast<int>(options_.write_timeout.count())) > 0;
   }
 
+  // Reads try the socket first and wait only when it has nothing: one system call per read, not two.
   ssize_t read(char* ptr, size_t size) override {
     if (!has_buffered()) {
-      if (wait_for(sock_, POLLIN, remaining_ms(deadline_)) <= 0) return -1;
-      const ssize_t n = ::recv(sock_, buffer_.data(), buffer_.size(), 0);
+      ssize_t n = ::recv(sock_, buffer_.data(), buffer_.size(), MSG_DONTWAIT);
+      if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+        if (wait_for(sock_, POLLIN, remaining_ms(deadline_)) <= 0) return -1;
+        n = ::recv(sock_, buffer_.data(), buffer_.size(), MSG_DONTWAIT);
+      }
       if (n <= 0) return n;
       begin_ = 0;
       end_ = static_cast<std::size_t>(n);
@@ -124,12 +130,25 @@ class LimitedStream final : public httplib::Stream {
   }
 
   ssize_t write(const char* ptr, size_t size) override {
-    if (wait_for(sock_, POLLOUT, static_cast<int>(options_.write_timeout.count())) <= 0) return -1;
-    return ::send(sock_, ptr, size, MSG_NOSIGNAL);
+    ssize_t n = ::send(sock_, ptr, size, MSG_NOSIGNAL | MSG_DONTWAIT);
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      if (wait_for(sock_, POLLOUT, static_cast<int>(options_.write_timeout.count())) <= 0) return -1;
+      n = ::send(sock_, ptr, size, MSG_NOSIGNAL | MSG_DONTWAIT);
+    }
+    return n;
   }
 
-  void get_remote_ip_and_port(std::string& ip, int& port) const override { peer_address(sock_, false, ip, port); }
-  void get_local_ip_and_port(std::string& ip, int& port) const override { peer_address(sock_, true, ip, port); }
+  // The library asks for both addresses on every request; they do not change, so ask the kernel once.
+  void get_remote_ip_and_port(std::string& ip, int& port) const override {
+    if (remote_port_ < 0) peer_address(sock_, false, remote_ip_, remote_port_);
+    ip = remote_ip_;
+    port = remote_port_;
+  }
+  void get_local_ip_and_port(std::string& ip, int& port) const override {
+    if (local_port_ < 0) peer_address(sock_, true, local_ip_, local_port_);
+    ip = local_ip_;
+    port = local_port_;
+  }
   socket_t socket() const override { return sock_; }
 
  private:
@@ -139,6 +158,8 @@ class LimitedStream final : public httplib::Stream {
   Clock::time_point deadline_ = Clock::now();
   std::array<char, 4096> buffer_{};
   std::size_t begin_ = 0, end_ = 0;
+  mutable std::string remote_ip_, local_ip_;
+  mutable int remote_port_ = -1, local_port_ = -1;
 };
 
 // A fixed pool whose queue of waiting connections is bounded; past the bound the connection is run
@@ -196,22 +217,32 @@ class BoundedQueue final : public httplib::TaskQueue {
   bool stopping_ = false;
 };
 
-HttpRequest plain_request(const httplib::Request& req, bool with_body) {
+HttpRequest plain_request(const httplib::Request& req) {
   HttpRequest out;
   out.method = req.method;
   out.path = req.path;
   for (const auto& [k, v] : req.headers) out.headers.emplace(k, v);
-  if (with_body) {
-    out.query.insert(req.params.begin(), req.params.end());
-    out.body = req.body;
+  out.query.insert(req.params.begin(), req.params.end());
+  out.body = req.body;
+  return out;
+}
+
+// The head as the request policy sees it: method, path and the few headers it reads.
+HttpRequest policy_head(const httplib::Request& req) {
+  HttpRequest out;
+  out.method = req.method;
+  out.path = req.path;
+  for (const char* name : kPolicyHeaders) {
+    if (req.has_header(name)) out.headers.emplace(name, req.get_header_value(name));
   }
   return out;
 }
 
-void fill(httplib::Response& res, const HttpResponse& plain) {
+void fill(httplib::Response& res, HttpResponse&& plain) {
   res.status = plain.status;
   for (const auto& [k, v] : plain.headers) res.set_header(k, v);
-  res.set_content(plain.body, plain.content_type);
+  res.body = std::move(plain.body);
+  res.set_header("Content-Type", plain.content_type);
 }
 
 // Answer, then close: the client learns it from the Connection header (the library adds one itself
@@ -351,9 +382,10 @@ class LibraryServer final : public httplib::Server {
 
  public:
   // One log line and one metrics sample per answered request.
-  void finish(std::string_view method, std::string_view path, int status, Clock::time_point start) {
+  void finish(std::string_view method, std::string_view path, int status, Clock::time_point start,
+              std::string_view route = {}) {
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    service_.record(method, path, status, seconds);
+    service_.metrics().record_request(route.empty() ? service_.route_label(method, path) : route, status, seconds);
     if (options_.log) {
       options_.log(printable(method.substr(0, 16)) + " " + printable(path) + " " + std::to_string(status) + " " +
                    std::to_string(static_cast<long long>(seconds * 1e6)) + "us");
@@ -388,7 +420,7 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
 
   s.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
     if (t_connection) t_connection->head_done = true;
-    if (auto problem = check_request_head(plain_request(req, false))) {
+    if (auto problem = check_request_head(policy_head(req))) {
       fill(res, problem_response(*problem));
       close_connection(req, res);
       return httplib::Server::HandlerResponse::Handled;
@@ -397,7 +429,9 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
   });
 
   auto dispatch = [&routed = impl_->service](const httplib::Request& req, httplib::Response& res) {
-    fill(res, routed.handle(plain_request(req, true)));
+    HttpResponse response = routed.handle(plain_request(req));
+    if (t_connection) t_connection->route = response.route;
+    fill(res, std::move(response));
   };
   s.Get(".*", dispatch);
   s.Post(".*", dispatch);
@@ -424,8 +458,8 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
   });
 
   s.set_logger([&s](const httplib::Request& req, const httplib::Response& res) {
-    const Clock::time_point start = t_connection ? t_connection->request_start : Clock::now();
-    s.finish(req.method, req.path, res.status, start);
+    if (!t_connection) return;
+    s.finish(req.method, req.path, res.status, t_connection->request_start, t_connection->route);
   });
 }
 

@@ -1,14 +1,14 @@
 #include "http/http_types.h"
 
 #include <algorithm>
-#include <cctype>
 
 #include "codec/problem.h"
 
 namespace softtune::http {
 namespace {
 
-char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
+// ASCII only, without the locale lookup of std::tolower: header names are ASCII (RFC 9110 5.1).
+char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);

@@ -41,6 +41,7 @@ struct HttpResponse {
   std::string content_type = "application/json";
   std::string body;
   std::vector<std::pair<std::string, std::string>> headers;  ///< extra headers (Allow, Cache-Control, ...)
+  std::string_view route;  ///< set by Service::handle: the pattern of the route that answered (metrics label)
 };
 
 /// 200 (or `status`) with the document as application/json.

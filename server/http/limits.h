@@ -31,4 +31,10 @@ inline constexpr std::chrono::milliseconds kWriteTimeout{10'000};
 inline constexpr std::chrono::milliseconds kKeepAliveTimeout{5'000};
 inline constexpr std::size_t kKeepAliveMaxRequests = 1000;
 
+/// Responses of deterministic contracts (tune) kept for repeated requests (a designer moving a slider
+/// back and forth asks the same thing again): at most this many entries and bytes, least recently
+/// used evicted first.
+inline constexpr std::size_t kResponseCacheEntries = 4096;
+inline constexpr std::size_t kResponseCacheBytes = 64u << 20;
+
 }  // namespace softtune::http::limits

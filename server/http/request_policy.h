@@ -10,6 +10,9 @@
 
 namespace softtune::http {
 
+/// The only headers check_request_head reads (the transport copies just these for it).
+inline constexpr const char* kPolicyHeaders[] = {"Transfer-Encoding", "Content-Encoding", "Content-Length", "Content-Type"};
+
 /// The first rule the request head breaks, or nothing:
 ///   Transfer-Encoding present            -> 411 (bodies must come with Content-Length)
 ///   Content-Encoding present             -> 415 (compressed bodies are refused)

@@ -33,16 +33,29 @@ HttpResponse static_page(const HttpRequest& request, Service& service) {
 
 }  // namespace
 
-Handler json_contract(std::function<nlohmann::json(const nlohmann::json&)> contract) {
-  return [contract = std::move(contract)](const HttpRequest& request, Service&) {
-    return json_response(contract(codec::parse_json(request.body)));
+Handler json_contract(std::function<nlohmann::json(const nlohmann::json&)> contract, std::string cache) {
+  return [contract = std::move(contract), cache = std::move(cache)](const HttpRequest& request, Service& service) {
+    const nlohmann::json doc = codec::parse_json(request.body);
+    if (cache.empty()) return json_response(contract(doc));
+    const std::string key = cache + '\n' + doc.dump();
+    HttpResponse response;
+    if (auto body = service.response_cache().find(key)) {
+      service.metrics().record_cache(cache, true);
+      response.body = *body;
+      return response;
+    }
+    service.metrics().record_cache(cache, false);
+    auto body = std::make_shared<const std::string>(contract(doc).dump());
+    response.body = *body;
+    service.response_cache().insert(key, std::move(body));
+    return response;
   };
 }
 
 std::vector<Route> service_routes() {
   return {
       {"GET", "/api/v1/health", health},
-      {"POST", "/api/v1/tune", json_contract(codec::run_tune)},
+      {"POST", "/api/v1/tune", json_contract(codec::run_tune, "tune")},
       {"GET", "/api/v1/openapi.json", openapi},
       {"GET", "/metrics", metrics},
       {"GET", "/{path...}", static_page},

@@ -13,7 +13,9 @@ namespace softtune::http {
 /// A handler for a JSON contract shared with the CLI (codec::run_tune, ...): parses the body with
 /// codec::parse_json (400 when malformed, deeper than limits::kMaxJsonDepth or holding a duplicated key),
 /// runs `contract`, and answers 200 application/json. Problems it throws keep their status.
-Handler json_contract(std::function<nlohmann::json(const nlohmann::json&)> contract);
+/// A deterministic contract names a `cache`: its responses are kept in the service's response cache,
+/// keyed by the canonical request, and counted in softtune_cache_{hits,misses}_total{cache}.
+Handler json_contract(std::function<nlohmann::json(const nlohmann::json&)> contract, std::string cache = "");
 
 /// Every route of the service; the static page's catch-all comes last.
 std::vector<Route> service_routes();

@@ -11,7 +11,7 @@ std::string_view routing_method(std::string_view method) { return method == "HEA
 }  // namespace
 
 Service::Service(ServiceConfig config, std::vector<Route> routes)
-    : config_(std::move(config)), routes_(std::move(routes)) {}
+    : config_(std::move(config)), routes_(std::move(routes)), cache_(config_.cache_entries, config_.cache_bytes) {}
 
 // Exact patterns first; when the path has routes only under other methods, nothing (405 follows); the
 // static catch-all last, so GET /api/v1/tune is "405, use POST" and not "no such file".
@@ -42,10 +42,6 @@ std::string_view Service::route_label(std::string_view method, std::string_view 
   return r ? std::string_view(r->pattern) : std::string_view("unmatched");
 }
 
-void Service::record(std::string_view method, std::string_view path, int status, double seconds) {
-  metrics_.record_request(route_label(method, path), status, seconds);
-}
-
 double Service::uptime_seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
 }
@@ -54,7 +50,9 @@ HttpResponse Service::handle(HttpRequest request) {
   try {
     if (const Route* r = find(request.method, request.path)) {
       request.params = *match_route(r->pattern, request.path);
-      return r->handler(request, *this);
+      HttpResponse response = r->handler(request, *this);
+      response.route = r->pattern;
+      return response;
     }
     if (const std::string allow = allowed_methods(request.path); !allow.empty()) {
       HttpResponse res = problem_response(codec::Problem(405, "Method not allowed", "method",

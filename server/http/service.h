@@ -1,7 +1,7 @@
 #pragma once
 // The service without the transport: the route table, the one error wrapper, metrics and the
 // configuration the handlers share. The transport turns bytes into HttpRequest, calls handle(), and
-// reports each finished request to record(); tests can call handle() directly.
+// counts each finished request in metrics(); tests can call handle() directly.
 
 #include <chrono>
 #include <filesystem>
@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "http/http_types.h"
+#include "http/limits.h"
 #include "http/metrics.h"
+#include "http/response_cache.h"
 
 namespace softtune::http {
 
@@ -28,6 +30,8 @@ struct Route {
 
 struct ServiceConfig {
   std::filesystem::path web_root = "web";  ///< the static page's folder
+  std::size_t cache_entries = limits::kResponseCacheEntries;  ///< 0 turns the response cache off
+  std::size_t cache_bytes = limits::kResponseCacheBytes;
 };
 
 class Service {
@@ -41,12 +45,10 @@ class Service {
   /// The metrics label of a request: its route's pattern, or "unmatched".
   std::string_view route_label(std::string_view method, std::string_view path) const;
 
-  /// Counts one answered request in the metrics.
-  void record(std::string_view method, std::string_view path, int status, double seconds);
-
   const ServiceConfig& config() const { return config_; }
   const std::vector<Route>& routes() const { return routes_; }
   Metrics& metrics() { return metrics_; }
+  ResponseCache& response_cache() { return cache_; }
   double uptime_seconds() const;
 
  private:
@@ -57,6 +59,7 @@ class Service {
   ServiceConfig config_;
   std::vector<Route> routes_;
   Metrics metrics_;
+  ResponseCache cache_;
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 };
 

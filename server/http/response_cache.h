@@ -1,0 +1,42 @@
+#pragma once
+// A bounded LRU cache of response bodies for deterministic JSON contracts (tune gives the same bytes
+// for the same request), keyed by route and canonical request (nlohmann's dump: sorted keys, shortest
+// round-trip numbers), so {"a":1,"b":2} and { "b": 2, "a": 1.0 } share an entry. Thread-safe.
+
+#include <cstddef>
+#include <list>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <unordered_map>
+
+namespace softtune::http {
+
+class ResponseCache {
+ public:
+  ResponseCache(std::size_t max_entries, std::size_t max_bytes);
+
+  /// The cached body, or nullptr. A hit makes the entry the most recently used.
+  std::shared_ptr<const std::string> find(const std::string& key);
+  /// Stores a body, evicting the least recently used entries past either bound. Bodies larger than
+  /// a quarter of max_bytes are not stored.
+  void insert(const std::string& key, std::shared_ptr<const std::string> body);
+
+  std::size_t entries() const;
+  std::size_t bytes() const;  ///< keys plus bodies
+
+ private:
+  struct Entry {
+    std::string key;
+    std::shared_ptr<const std::string> body;
+  };
+  void evict_locked();
+
+  const std::size_t max_entries_, max_bytes_;
+  mutable std::mutex mutex_;
+  std::list<Entry> order_;  ///< most recently used first
+  std::unordered_map<std::string, std::list<Entry>::iterator> index_;
+  std::size_t bytes_ = 0;
+};
+
+}  // namespace softtune::http
