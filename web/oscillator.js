@@ -73,8 +73,12 @@ export function plotDuration(frequencyHz) {
   return frequencyHz > 0 ? 3 / frequencyHz : 1;
 }
 
+/// Points of the smooth exact curve: a method takes few steps per period, the true motion is drawn finely.
+export const EXACT_POINTS = 600;
+
 /// Plot data from a tune response: {t, exact, methods: {name: x[]}, error: {name: |x - exact|[]},
-/// stride, truncated}. Methods whose step matrix is missing (or not finite) are left out.
+/// smooth: {t, x} (the exact motion on a fine grid), stride, truncated}. Methods whose step matrix is
+/// missing (or not finite) are left out.
 export function responseSeries(tune) {
   const h = tune.h;
   const omega = tune.omega ?? 0;
@@ -98,5 +102,8 @@ export function responseSeries(tune) {
       return e > 0 ? e : null;
     });
   }
-  return { t, exact, methods, error, stride, truncated: wanted > MAX_STEPS };
+  const end = t[t.length - 1];
+  const fine = t.length >= EXACT_POINTS ? t : Array.from({ length: EXACT_POINTS + 1 }, (_, i) => (end * i) / EXACT_POINTS);
+  const smooth = { t: fine, x: fine.map((ti) => analyticPosition(1, 0, omega, zeta, ti)) };
+  return { t, exact, methods, error, smooth, stride, truncated: wanted > MAX_STEPS };
 }

@@ -56,10 +56,12 @@ function methodSeries(names, extra = {}) {
 const fmtAxis = (digits) => (u, vals) => vals.map((v) => (v === null ? '' : Number(v.toPrecision(digits)).toString()));
 const logAxis = (u, vals) => vals.map((v) => (v === null ? '' : v.toExponential(0).replace('e+', 'e')));
 
-/// Response plot: time (s) against x for the exact motion and each method.
+/// Response plot: time (s) against x for the exact motion (on its fine grid) and each method (at its steps).
 export function drawResponse(el, series) {
   resize.observe(el);
   const names = METHODS.filter((m) => series.methods[m]);
+  const zip = (t, x) => t.map((ti, i) => [ti, x[i]]);
+  const data = aligned([zip(series.smooth.t, series.smooth.x), ...names.map((m) => zip(series.t, series.methods[m]))]);
   draw(el, {
     scales: {
       x: { time: false },
@@ -67,8 +69,11 @@ export function drawResponse(el, series) {
       y: { range: (u, lo, hi) => [Math.max(Math.min(lo, -1.05), -3), Math.min(Math.max(hi, 1.05), 3)] },
     },
     axes: [{ label: 'time (s)', values: fmtAxis(3) }, { label: 'x (x0 = 1)', values: fmtAxis(3) }],
-    series: [{ label: 't (s)' }, { label: 'exact', stroke: COLORS.exact, width: 2.5, dash: [6, 4] }, ...methodSeries(names)],
-  }, [series.t, series.exact, ...names.map((m) => series.methods[m])]);
+    series: [{ label: 't (s)' },
+      { label: 'exact', stroke: COLORS.exact, width: 2.5, dash: [6, 4], spanGaps: true, points: { show: false } },
+      // Markers at each step while they are few enough to tell apart: they show where the method samples.
+      ...methodSeries(names, { spanGaps: true, points: { show: series.t.length <= 200 } })],
+  }, data);
 }
 
 /// Error plot: time (s) against |x_method - x_exact|, log scale.

@@ -89,6 +89,9 @@ test('past the stability limit the replay grows while the exact motion stays bou
   const r = tune('--frames', '2', '--oscillation', 'free', '--mass', '1', '--fps', '60');
   const s = responseSeries(r);
   for (const name of METHODS) assert.ok(s.methods[name], `${name} replayed`);
+  // Two steps per period: the exact motion is drawn on its own fine grid over the same time span.
+  assert.ok(s.smooth.t.length > 50 * s.t.length && s.smooth.t.at(-1) === s.t.at(-1));
+  s.smooth.t.forEach((t, i) => assert.equal(s.smooth.x[i], analyticPosition(1, 0, r.omega, r.damping_ratio, t)));
   const ee = s.methods.explicit_euler.filter((x) => x !== null);
   assert.ok(Math.abs(ee.at(-1)) > 50, `explicit Euler grows: ${ee.at(-1)}`);
   assert.ok(s.exact.every((x) => Math.abs(x) <= 1 + 1e-12));
