@@ -428,6 +428,17 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
     return httplib::Server::HandlerResponse::Unhandled;
   });
 
+  // "Expect: 100-continue" is answered before the pre-routing hook runs: refuse there too, so a client
+  // never sends a body we would refuse.
+  s.set_expect_100_continue_handler([](const httplib::Request& req, httplib::Response& res) {
+    if (auto problem = check_request_head(policy_head(req))) {
+      fill(res, problem_response(*problem));
+      close_connection(req, res);
+      return problem->status;
+    }
+    return 100;
+  });
+
   auto dispatch = [&routed = impl_->service](const httplib::Request& req, httplib::Response& res) {
     HttpResponse response = routed.handle(plain_request(req));
     if (t_connection) t_connection->route = response.route;
@@ -443,10 +454,15 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
   // Statuses the library sets itself (malformed head, too long a target, ...) get a problem body too.
   s.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
-    if (t_connection && t_connection->head_overflow) {
+    // The library refuses a header line over its compiled-in limit with a bare 400; the bytes read
+    // tell that case apart from a malformed head.
+    const bool line_too_long = t_connection && !t_connection->head_done && res.status == 400 &&
+                               t_connection->head_bytes > limits::kMaxHeaderLineBytes;
+    if (t_connection && (t_connection->head_overflow || line_too_long)) {
       fill(res, problem_response(codec::Problem(431, "Request header fields too large", "headers",
                                                 "the request line and headers are limited to " +
-                                                    std::to_string(limits::kMaxHeaderBytes) + " bytes")));
+                                                    std::to_string(limits::kMaxHeaderBytes) + " bytes, each line to " +
+                                                    std::to_string(limits::kMaxHeaderLineBytes))));
     } else {
       fill(res, problem_response(library_problem(res.status)));
     }

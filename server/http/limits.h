@@ -13,6 +13,10 @@ namespace softtune::http::limits {
 inline constexpr std::size_t kMaxBodyBytes = 1 << 20;
 /// Largest request line plus headers (bytes); more is refused with 431.
 inline constexpr std::size_t kMaxHeaderBytes = 16 * 1024;
+/// Longest single request line or header line (bytes): cpp-httplib 0.11.4's compiled-in
+/// CPPHTTPLIB_HEADER_MAX_LENGTH / CPPHTTPLIB_REQUEST_URI_MAX_LENGTH; a longer header line is 431, a
+/// longer request line 414.
+inline constexpr std::size_t kMaxHeaderLineBytes = 8192;
 /// Deepest JSON nesting accepted (400 above); nlohmann's recursive dump and copy crash on deep documents.
 inline constexpr int kMaxJsonDepth = codec::kMaxJsonDepth;
 

@@ -1,7 +1,7 @@
 #pragma once
 // A bounded LRU cache of response bodies for deterministic JSON contracts (tune gives the same bytes
-// for the same request), keyed by route and canonical request (nlohmann's dump: sorted keys, shortest
-// round-trip numbers), so {"a":1,"b":2} and { "b": 2, "a": 1.0 } share an entry. Thread-safe.
+// for the same request), keyed by the contract and the canonical request (routes.cpp: sorted keys, numbers
+// as doubles), so {"a":1,"b":2} and { "b": 2, "a": 1.0 } share an entry. Thread-safe.
 
 #include <cstddef>
 #include <list>

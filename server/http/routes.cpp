@@ -31,13 +31,25 @@ HttpResponse static_page(const HttpRequest& request, Service& service) {
   return serve_static(service.config().web_root, request.path);
 }
 
+// The cache key of a request: numbers as the codec reads them (doubles, so 2 and 2.0 are one request),
+// keys sorted by nlohmann's object map, no whitespace.
+nlohmann::json canonical(const nlohmann::json& doc) {
+  if (doc.is_number()) return doc.get<double>();
+  if (doc.is_array() || doc.is_object()) {
+    nlohmann::json out = doc;
+    for (auto& element : out) element = canonical(element);
+    return out;
+  }
+  return doc;
+}
+
 }  // namespace
 
 Handler json_contract(std::function<nlohmann::json(const nlohmann::json&)> contract, std::string cache) {
   return [contract = std::move(contract), cache = std::move(cache)](const HttpRequest& request, Service& service) {
     const nlohmann::json doc = codec::parse_json(request.body);
     if (cache.empty()) return json_response(contract(doc));
-    const std::string key = cache + '\n' + doc.dump();
+    const std::string key = cache + '\n' + canonical(doc).dump();
     HttpResponse response;
     if (auto body = service.response_cache().find(key)) {
       service.metrics().record_cache(cache, true);

@@ -29,6 +29,14 @@ std::string exchange(int port, const std::string& request) {
 
 std::string field_of(const std::string& response) { return json::parse(body_of(response))["field"]; }
 
+// Quick options with a shorter whole-request deadline and idle keep-alive timeout.
+softtune::http::TransportOptions short_timeouts(int read_ms, int keep_alive_ms) {
+  auto options = quick_options();
+  options.request_read_timeout = std::chrono::milliseconds(read_ms);
+  options.keep_alive_timeout = std::chrono::milliseconds(keep_alive_ms);
+  return options;
+}
+
 }  // namespace
 
 TEST(Hardening, ChunkedBodyIsRefusedBeforeItIsRead) {
@@ -81,6 +89,10 @@ TEST(Hardening, OversizedBodyIs413) {
   const std::string r = exchange(s.port(), "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\n"
                                            "Content-Length: 1073741824\r\n\r\n");
   EXPECT_EQ(status_of(r), 413);
+  // With "Expect: 100-continue" the refusal comes instead of "100 Continue".
+  const std::string expecting = exchange(s.port(), "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\n"
+                                                   "Content-Length: 5000000\r\nExpect: 100-continue\r\n\r\n");
+  EXPECT_EQ(status_of(expecting), 413) << expecting;
   // Sent, one byte over the limit: the answer comes before the body is read.
   std::string body = "[" + std::string(limits::kMaxBodyBytes - 1, ' ') + "]";
   const std::string over = exchange(s.port(), "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\n"
@@ -102,6 +114,9 @@ TEST(Hardening, HugeHeadersAre431) {
   auto r1 = client.Get("/api/v1/health", one_huge);
   ASSERT_TRUE(r1);
   EXPECT_EQ(r1->status, 431);
+  auto one_long_line = client.Get("/api/v1/health", {{"X-Filler", std::string(limits::kMaxHeaderLineBytes + 100, 'd')}});
+  ASSERT_TRUE(one_long_line);
+  EXPECT_EQ(one_long_line->status, 431);
   httplib::Headers many;
   for (int i = 0; i < 40; ++i) many.emplace("X-Filler-" + std::to_string(i), std::string(500, 'b'));
   auto r2 = client.Get("/api/v1/health", many);
@@ -183,17 +198,13 @@ TEST(Hardening, FullQueueAnswers503) {
 }
 
 TEST(Hardening, SlowClientIsCutOffAtTheRequestDeadline) {
-  auto options = quick_options();
-  options.request_read_timeout = std::chrono::milliseconds(500);
-  TestServer s(options);
+  TestServer s(short_timeouts(500, 1500));
   RawConnection slow(s.port());
   ASSERT_TRUE(slow.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\n"));
   // One header byte every 100 ms: each read succeeds quickly, only the whole-request deadline stops it.
   const auto start = std::chrono::steady_clock::now();
-  std::string got;
-  while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(3000)) {
-    if (!slow.send("X")) break;
-    got += slow.receive(std::chrono::milliseconds(100));
+  while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(3000) && slow.send("X")) {
+    slow.receive(std::chrono::milliseconds(100));
     if (slow.closed()) break;
   }
   EXPECT_TRUE(slow.closed()) << "still open after 3 s";
@@ -201,9 +212,7 @@ TEST(Hardening, SlowClientIsCutOffAtTheRequestDeadline) {
 }
 
 TEST(Hardening, IdleKeepAliveConnectionsAreClosed) {
-  auto options = quick_options();
-  options.keep_alive_timeout = std::chrono::milliseconds(300);
-  TestServer s(options);
+  TestServer s(short_timeouts(1500, 300));
   RawConnection idle(s.port());
   ASSERT_TRUE(idle.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\n\r\n"));
   const auto start = std::chrono::steady_clock::now();

@@ -25,15 +25,20 @@ std::string media_type(const httplib::Result& r) {
   return t.substr(0, t.find(';'));
 }
 
+// GET `path`, expecting 200 with a JSON body; the body.
+std::string get_json(const TestServer& s, const char* path) {
+  auto r = s.client().Get(path);
+  if (!r) return "(no response)";
+  EXPECT_EQ(r->status, 200) << path;
+  EXPECT_EQ(media_type(r), kJson) << path;
+  return r->body;
+}
+
 }  // namespace
 
 TEST(HttpRoutes, HealthConforms) {
   TestServer s;
-  auto r = s.client().Get("/api/v1/health");
-  ASSERT_TRUE(r);
-  EXPECT_EQ(r->status, 200);
-  EXPECT_EQ(media_type(r), kJson);
-  EXPECT_EQ(conformance_error("/api/v1/health", "get", 200, kJson, json::parse(r->body)), "");
+  EXPECT_EQ(conformance_error("/api/v1/health", "get", 200, kJson, json::parse(get_json(s, "/api/v1/health"))), "");
 }
 
 TEST(HttpRoutes, TuneAnswersTheCliContractAndConforms) {
@@ -106,11 +111,7 @@ TEST(HttpRoutes, UnknownRoutesAndWrongMethods) {
 
 TEST(HttpRoutes, OpenApiServesTheDocument) {
   TestServer s;
-  auto r = s.client().Get("/api/v1/openapi.json");
-  ASSERT_TRUE(r);
-  EXPECT_EQ(r->status, 200);
-  EXPECT_EQ(media_type(r), kJson);
-  EXPECT_EQ(r->body, softtune::http::openapi_text());
+  EXPECT_EQ(get_json(s, "/api/v1/openapi.json"), softtune::http::openapi_text());
 }
 
 TEST(HttpRoutes, StaticPageWithContentTypes) {

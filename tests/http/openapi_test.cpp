@@ -85,7 +85,10 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["write_timeout_ms"], l::kWriteTimeout.count());
   EXPECT_EQ(x["keep_alive_timeout_ms"], l::kKeepAliveTimeout.count());
   EXPECT_EQ(x["keep_alive_max_requests"], l::kKeepAliveMaxRequests);
-  EXPECT_EQ(x.size(), 10u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x["response_cache_entries"], l::kResponseCacheEntries);
+  EXPECT_EQ(x["response_cache_bytes"], l::kResponseCacheBytes);
+  EXPECT_EQ(x["max_header_line_bytes"], l::kMaxHeaderLineBytes);
+  EXPECT_EQ(x.size(), 13u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {
