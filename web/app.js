@@ -1,7 +1,7 @@
 // softtune's designer page: the form is the state (mirrored in the URL), every change asks the API
 // again (debounced; only the newest answer is shown), and each panel says so plainly when this server
 // lacks its route. Hooks for tests and tools: data-testid on values, plots and the preview image, and
-// body[data-pending] = requests in flight.
+// body[data-pending] = requests in flight or scheduled.
 import { buildBodies } from './bodies.js';
 import { ApiError, Latest, callJson, debounce, hasRoute, loadRoutes } from './api.js';
 import { responseSeries } from './oscillator.js';
@@ -34,6 +34,22 @@ function busy(delta) {
   pending += delta;
   document.body.dataset.pending = String(pending);
   status.textContent = pending > 0 ? 'Updating…' : status.dataset.error ?? 'Up to date';
+}
+
+/// debounce() whose waiting counts as pending work, so body[data-pending] = 0 means truly idle: nothing
+/// scheduled and nothing in flight.
+function trackedDebounce(fn, ms) {
+  let armed = false;
+  const run = debounce((...args) => {
+    armed = false;
+    fn(...args);  // starts its requests (tracked) before the wait is released below
+    busy(-1);
+  }, ms);
+  return (...args) => {
+    if (!armed) busy(+1);
+    armed = true;
+    run(...args);
+  };
 }
 
 async function tracked(promise) {
@@ -111,7 +127,7 @@ function showProblem(error) {
 
 // ---- tune -----------------------------------------------------------------------------------------
 
-const scheduleTune = debounce(runTune, 120);
+const scheduleTune = trackedDebounce(runTune, 120);
 
 async function runTune() {
   const state = readForm(form);
@@ -151,7 +167,7 @@ function sameCurve(a, b) {
 
 // ---- the slower panels: simulate, accuracy, preview ------------------------------------------------
 
-const scheduleSlow = debounce((state, request, tune) => {
+const scheduleSlow = trackedDebounce((state, request, tune) => {
   runSimulate(state, tune);
   runAccuracy(request);
   runPreview(state, tune);

@@ -99,14 +99,11 @@ async function openPage(url, viewport = { width: 1280, height: 800 }) {
   return page;
 }
 
-/// Waits until the page has no request in flight and the numbers are filled in.
+/// Waits until the page has nothing scheduled or in flight (the debounce counts) and shows numbers.
 async function settled(page) {
   await page.waitForFunction(() => document.body.dataset.pending === '0' &&
     document.querySelector('[data-testid="k"]').textContent !== '' &&
-    !document.getElementById('results').classList.contains('stale'), null, { timeout: 15000 });
-  // The slower panels start 350 ms after the numbers arrive.
-  await page.waitForTimeout(500);
-  await page.waitForFunction(() => document.body.dataset.pending === '0', null, { timeout: 30000 });
+    !document.getElementById('results').classList.contains('stale'), null, { timeout: 30000 });
 }
 
 const SHOWN = { 'effective-mass': 'effective_mass', k: 'k', c: 'c', gamma: 'gamma', beta: 'beta', erp: 'erp', cfm: 'cfm' };
