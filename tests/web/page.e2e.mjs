@@ -32,7 +32,8 @@ const consoleErrors = [];
 
 function startServer() {
   return new Promise((resolve, reject) => {
-    const child = spawn(softtune, ['serve', '--port', '0', '--web', webDir], { stdio: ['ignore', 'pipe', 'pipe'] });
+    // From the source root, so the server finds presets/ by its default (or $SOFTTUNE_PRESETS) too.
+    const child = spawn(softtune, ['serve', '--port', '0', '--web', webDir], { cwd: root, stdio: ['ignore', 'pipe', 'pipe'] });
     let out = '';
     const timer = setTimeout(() => reject(new Error(`softtune serve printed no URL: ${out}`)), 10000);
     child.stdout.on('data', (d) => {
@@ -257,5 +258,35 @@ test('the page shows the API numbers, follows the controls, restores a shared UR
   assert.ok(overflow <= 0, `the narrow page scrolls sideways by ${overflow} px`);
   await narrow.close();
 
+  assert.deepEqual(consoleErrors, [], 'no console errors');
+});
+
+test('picking a preset fills the controls from its scene and simulates it', async (t) => {
+  const served = await routes();
+  if (!served.has('GET /api/v1/presets') || !served.has('GET /api/v1/presets/{name}')) {
+    t.skip('this server has no presets routes');
+    return;
+  }
+  const { doc: index } = await api('GET', 'api/v1/presets');
+  if (!index.presets.some((p) => p.name === 'oscillator')) {
+    t.skip('no oscillator preset in this server\'s presets folder');
+    return;
+  }
+  const { doc: scene } = await api('GET', 'api/v1/presets/oscillator');
+  const page = await openPage(base);
+  assert.equal(await page.locator('#preset option').count(), index.presets.length + 1);
+  await page.locator('#preset').selectOption('oscillator');
+  await page.waitForFunction(() => new URLSearchParams(location.search).get('preset') === 'oscillator');
+  await settled(page);
+  const first = scene.oscillators[0];
+  assert.equal(await page.locator('#frames').inputValue(), String(first.response_frames));
+  await expectNumbers(page, { fps: scene.world.fps, substeps: scene.world.substeps ?? 1, response_frames: first.response_frames,
+    basis_fps: first.basis_fps ?? 60, mode: first.mode ?? 'standard', oscillation: first.oscillation, effective_mass: first.effective_mass });
+  if (served.has('POST /api/v1/simulate')) {
+    assert.equal(await page.locator('#probes tbody tr').count(), scene.probes.length);
+    assert.ok(Number(await page.getByTestId('plot-simulation').getAttribute('data-points')) > 10);
+  }
+  await page.screenshot({ path: path.join(shotDir, 'web-screenshot-preset.png'), fullPage: true });
+  await page.close();
   assert.deepEqual(consoleErrors, [], 'no console errors');
 });
