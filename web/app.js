@@ -7,7 +7,7 @@ import { ApiError, Latest, callJson, debounce, hasRoute, loadRoutes } from './ap
 import { responseSeries } from './oscillator.js';
 import { drawError, drawResponse, drawSimulation, drawWorkPrecision, showUnavailable } from './plots.js';
 import { PreviewPlayer } from './preview.js';
-import { copyText, fmt, showEngines, showNumbers, showStability } from './results.js';
+import { copyText, fmt, formatPercent, showEngines, showNumbers, showStability } from './results.js';
 import {
   OSCILLATION_ZETA, fromQuery, readForm, stateFromScene, toQuery, tuneRequest, tunedScene, tuningFields,
   writeForm,
@@ -212,7 +212,7 @@ async function runSimulate(state, tune) {
     drawSimulation($('plot-simulation'), doc.probes ?? []);
     body.replaceChildren(...(doc.probes ?? []).map((p) => {
       const tr = document.createElement('tr');
-      const pct = (e) => (e === null || e === undefined ? '—' : `${(100 * e).toFixed(2)} %`);
+      const pct = (e) => formatPercent(e === null || e === undefined ? null : 100 * e);
       const cells = [p.id ?? '', fmt(p.requested?.frequency_hz), fmt(p.measured?.frequency_hz), pct(p.error?.frequency),
         fmt(p.requested?.damping_ratio), fmt(p.measured?.damping_ratio), pct(p.error?.damping_ratio),
         fmt(p.measured?.overshoot), fmt(p.measured?.settle_frames)];

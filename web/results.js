@@ -26,10 +26,15 @@ function setValue(root, testid, value, title) {
   el.title = title ?? (value === null ? 'not defined for this tuning' : String(value));
 }
 
+/// A percentage with its sign and two decimals, rounded first so round-off reads 0.00 %, not -0.00 %.
+export function formatPercent(p) {
+  if (p === null || p === undefined) return '—';
+  const shown = Math.round(p * 100) / 100 || 0;
+  return `${shown > 0 ? '+' : ''}${shown.toFixed(2)} %`;
+}
+
 function setPercent(el, p) {
-  // Round first, so a round-off difference reads 0.00 %, not -0.00 %.
-  const shown = p === null ? null : Math.round(p * 100) / 100 || 0;
-  el.textContent = shown === null ? '—' : `${shown > 0 ? '+' : ''}${shown.toFixed(2)} %`;
+  el.textContent = formatPercent(p);
   el.className = p === null ? '' : Math.abs(p) < 2 ? 'err-small' : Math.abs(p) > 10 ? 'err-big' : '';
 }
 
