@@ -101,7 +101,9 @@ export function drawWorkPrecision(el, rows) {
     showUnavailable(el, 'Every configuration the accuracy run tried blew up or took no measurable time.');
     return;
   }
-  const names = [...byMethod.keys()];
+  // The five integrators in their usual order, then whatever else the run measured (an engine's row).
+  const rank = (m) => (METHODS.includes(m) ? METHODS.indexOf(m) : METHODS.length);
+  const names = [...byMethod.keys()].sort((a, b) => rank(a) - rank(b));
   const [xs, ...ys] = aligned(names.map((m) => byMethod.get(m).map((r) => [r.cpu_seconds_per_sim_second, r.max_error])));
   draw(el, {
     scales: { x: { time: false, distr: 3 }, y: { distr: 3 } },

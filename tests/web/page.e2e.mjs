@@ -204,6 +204,8 @@ test('the page shows the API numbers, follows the controls, restores a shared UR
   delete shared.oscillation;
   await expectNumbers(page, shared);
   await page.screenshot({ path: path.join(shotDir, 'web-screenshot.png') });
+  // From the top, so the sticky controls sit where a reader first sees them.
+  await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: path.join(shotDir, 'web-screenshot-full.png'), fullPage: true });
   const link = page.url();
   await page.close();
@@ -286,6 +288,7 @@ test('picking a preset fills the controls from its scene and simulates it', asyn
     assert.equal(await page.locator('#probes tbody tr').count(), scene.probes.length);
     assert.ok(Number(await page.getByTestId('plot-simulation').getAttribute('data-points')) > 10);
   }
+  await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: path.join(shotDir, 'web-screenshot-preset.png'), fullPage: true });
   await page.close();
   assert.deepEqual(consoleErrors, [], 'no console errors');
