@@ -261,13 +261,15 @@ async function runAccuracy(request) {
   }
 }
 
-/// The preview contract (render README, "Preview frames"): a preset name plus the tuning fields of
-/// `softtune tune`, with `frames` the number of frames to render. A custom body previews as the 1-D
-/// oscillator with the effective mass the tune answer computed (from the mass or the 2-D constraint).
+/// The preview contract (README, "Preview frames"): a Box2D preset by name, or the 1-D oscillator with the
+/// tuning fields of `softtune tune` (a custom body, or the oscillator preset) and the effective mass the
+/// tune answer computed (from the mass or the 2-D constraint). `wait: false` answers at once, so the
+/// progress bar can follow the render.
 function previewRequest(state, tune) {
+  const settings = { frames: PREVIEW_FRAMES, size: PREVIEW_SIZE, wait: false };
+  if (state.preset && state.preset !== 'oscillator') return { preset: state.preset, ...settings };
   const { constraint, ...fields } = tuneRequest(state);
-  return { preset: state.preset || 'oscillator', ...fields, effective_mass: tune.effective_mass,
-    frames: PREVIEW_FRAMES, size: PREVIEW_SIZE };
+  return { ...fields, effective_mass: tune.effective_mass, ...settings };
 }
 
 async function runPreview(state, tune) {
