@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "cli/cli_io.h"
+#include "codec/preset_loader.h"
 #include "codec/problem.h"
 #include "http/http_transport.h"
 #include "http/limits.h"
@@ -25,6 +26,8 @@ constexpr const char* kHelp = R"(softtune serve: the REST API under /api/v1/ and
   --port P       TCP port (default 8080; 0 picks a free one)
   --threads N    worker threads, one per connection being served (default 8, at most 256)
   --web DIR      folder of the static page (default web/, relative to the working directory)
+  --presets DIR  presets directory of /api/v1/simulate and /api/v1/presets (default: $SOFTTUNE_PRESETS,
+                 else presets/, relative to the working directory)
 
 Prints the URL, then one line per request on stderr: method, path, status, microseconds.
 SIGINT or SIGTERM stops it after the requests in flight.
@@ -49,7 +52,7 @@ void log_line(std::string_view line) {
 
 int run_serve(const Args& args) {
   return guarded([&] {
-    const Flags flags = parse_flags(args, {"host", "port", "threads", "web"}, {"help"});
+    const Flags flags = parse_flags(args, {"host", "port", "threads", "web", "presets"}, {"help"});
     if (flags.has("help")) {
       std::cout << kHelp;
       return kExitOk;
@@ -63,6 +66,10 @@ int run_serve(const Args& args) {
     config.web_root = flags.get("web").value_or("web");
     if (!std::filesystem::is_directory(config.web_root)) {
       std::cerr << "softtune: web folder \"" << config.web_root.string() << "\" not found; the page will answer 404\n";
+    }
+    config.presets_dir = codec::resolve_presets_dir(flags.get("presets"));
+    if (!std::filesystem::is_directory(config.presets_dir)) {
+      std::cerr << "softtune: presets folder \"" << config.presets_dir << "\" not found; /api/v1/presets will answer 404\n";
     }
 
     // SIGINT/SIGTERM are blocked in every thread and taken by one waiter, which stops the server

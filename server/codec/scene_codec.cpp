@@ -359,7 +359,9 @@ json run_simulate(const json& request, const std::string& presets_dir) {
   options.mass_model = read_mass_model(r);
   options.record_frames = read_bool(r, "frames", false);
   if (auto stride = r.integer("frame_stride")) {
-    if (*stride < 1 || *stride > 1000) throw invalid_field("frame_stride", "must be an integer in [1, 1000]");
+    if (*stride < 1 || *stride > kMaxFrameStride) {
+      throw invalid_field("frame_stride", "must be an integer in [1, " + std::to_string(kMaxFrameStride) + "]");
+    }
     options.frame_stride = static_cast<int>(*stride);
   }
   r.finish();

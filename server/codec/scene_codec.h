@@ -13,6 +13,9 @@
 
 namespace softtune::codec {
 
+/// Largest frame_stride of a simulate request (also in openapi.json's x-softtune-limits).
+inline constexpr int kMaxFrameStride = 1000;
+
 /// Decodes a scene (already schema-valid, or not: every field is read strictly) and checks its ranges and
 /// references; throws Problem (422) naming the dotted field and the rule.
 scene::Scene decode_scene(const nlohmann::json& doc);

@@ -14,16 +14,6 @@ using nlohmann::json;
 
 namespace {
 
-// Limits of a custom sweep (README "Accuracy and stability").
-constexpr std::size_t kMaxGridEntries = 32;
-constexpr std::size_t kMaxCases = 200000;
-constexpr int kMinObserveSteps = 1000, kMaxObserveSteps = 100000;
-constexpr double kMaxFrequencyRatio = 1000.0;
-constexpr double kMinStep = 1e-9, kMaxStep = 1.0;          // s
-constexpr double kMaxStiffness = 1e15;                     // N/m
-constexpr double kMaxMassRatio = 1e9;
-constexpr int kMaxChainIterations = 256;
-
 const char* verdict_name(Verdict v) {
   return v == Verdict::stable ? "stable" : v == Verdict::marginal ? "marginal" : "unstable";
 }

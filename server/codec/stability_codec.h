@@ -2,6 +2,7 @@
 // The stability contract (`softtune stability`, later GET|POST /api/v1/stability): no request = the
 // default sweep; a request narrows or widens the grid. Field list: README.md, "Accuracy and stability".
 
+#include <cstddef>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -10,6 +11,16 @@
 #include "softtune/stability_sweep.h"
 
 namespace softtune::codec {
+
+/// Request caps (also in openapi.json's x-softtune-limits and README "Limits").
+inline constexpr std::size_t kMaxGridEntries = 32;  ///< entries of each list
+inline constexpr std::size_t kMaxCases = 200000;    ///< product of the sweep lists
+inline constexpr int kMinObserveSteps = 1000, kMaxObserveSteps = 100000;
+inline constexpr double kMaxFrequencyRatio = 1000.0;
+inline constexpr double kMinStep = 1e-9, kMaxStep = 1.0;  ///< s
+inline constexpr double kMaxStiffness = 1e15;             ///< N/m
+inline constexpr double kMaxMassRatio = 1e9;
+inline constexpr int kMaxChainIterations = 256;
 
 struct StabilityRequest {
   SweepSettings sweep = default_sweep_settings();

@@ -2,6 +2,7 @@
 
 #include "codec/json_reader.h"
 #include "codec/tune_codec.h"
+#include "http/capability_routes.h"
 #include "http/openapi.h"
 #include "http/preview_routes.h"
 #include "http/static_files.h"
@@ -69,6 +70,12 @@ std::vector<Route> service_routes() {
   std::vector<Route> routes = {
       {"GET", "/api/v1/health", health},
       {"POST", "/api/v1/tune", json_contract(codec::run_tune, "tune")},
+      {"POST", "/api/v1/simulate", simulate},
+      {"GET", "/api/v1/presets", presets},
+      {"GET", "/api/v1/presets/{name}", preset},
+      {"POST", "/api/v1/accuracy", accuracy},
+      {"GET", "/api/v1/stability", default_stability()},
+      {"POST", "/api/v1/stability", stability},
       {"GET", "/api/v1/openapi.json", openapi},
       {"GET", "/metrics", metrics},
   };

@@ -8,6 +8,10 @@
 #include <sstream>
 
 #include "codec/problem.h"
+#include "codec/scene_codec.h"
+#include "codec/stability_codec.h"
+#include "softtune/accuracy.h"
+#include "softtune/scene/limits.h"
 #include "codec/tune_codec.h"
 #include "http/limits.h"
 #include "http/routes.h"
@@ -92,7 +96,20 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["max_preview_frames"], softtune::render::caps::kMaxFrames);
   EXPECT_EQ(x["max_preview_width"], softtune::render::caps::kMaxWidth);
   EXPECT_EQ(x["max_preview_height"], softtune::render::caps::kMaxHeight);
-  EXPECT_EQ(x.size(), 16u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x["scene_max_duration_s"], softtune::scene::limits::kMaxDurationS);
+  EXPECT_EQ(x["scene_max_steps"], softtune::scene::limits::kMaxSceneSteps);
+  EXPECT_EQ(x["scene_max_body_steps"], softtune::scene::limits::kMaxBodySteps);
+  EXPECT_EQ(x["scene_max_bodies"], softtune::scene::limits::kMaxBodies);
+  EXPECT_EQ(x["scene_max_joints"], softtune::scene::limits::kMaxJoints);
+  EXPECT_EQ(x["simulate_max_frame_stride"], softtune::codec::kMaxFrameStride);
+  EXPECT_EQ(x["accuracy_max_step_rates"], softtune::limits::kMaxStepRates);
+  EXPECT_EQ(x["accuracy_max_soft_substeps"], softtune::limits::kMaxSoftSubsteps);
+  EXPECT_EQ(x["accuracy_max_timing_repeats"], softtune::limits::kMaxTimingRepeats);
+  EXPECT_EQ(x["accuracy_max_steps_per_row"], softtune::limits::kMaxAccuracyStepsPerRow);
+  EXPECT_EQ(x["stability_max_grid_entries"], softtune::codec::kMaxGridEntries);
+  EXPECT_EQ(x["stability_max_cases"], softtune::codec::kMaxCases);
+  EXPECT_EQ(x["stability_max_observe_steps"], softtune::codec::kMaxObserveSteps);
+  EXPECT_EQ(x.size(), 29u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {
