@@ -1,22 +1,25 @@
 // The OpenAPI document itself: the embedded bytes are the file's, every route is documented and every
-// documented path is served, the limits are those of http/limits.h, every $ref resolves, and the
-// schemas agree with the tune codec on real requests and responses.
+// documented path is served, the limits are those of the server and the codecs, every $ref resolves, and
+// the schemas agree with the codecs on real requests and responses.
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <functional>
 #include <iterator>
+#include <map>
 #include <sstream>
 
+#include "codec/accuracy_codec.h"
 #include "codec/problem.h"
 #include "codec/scene_codec.h"
 #include "codec/stability_codec.h"
-#include "softtune/accuracy.h"
-#include "softtune/scene/limits.h"
 #include "codec/tune_codec.h"
 #include "http/limits.h"
 #include "http/routes.h"
 #include "openapi_conformance.h"
+#include "softtune/accuracy.h"
 #include "softtune/render/frame_pipeline.h"
+#include "softtune/scene/limits.h"
 
 using nlohmann::json;
 using softtune::http::testing::conformance_error;
@@ -162,5 +165,23 @@ TEST(OpenApi, ProblemsConform) {
     FAIL() << "expected a Problem";
   } catch (const softtune::codec::Problem& p) {
     EXPECT_EQ(conformance_error("/api/v1/tune", "post", 422, "application/problem+json", softtune::codec::problem_json(p)), "");
+  }
+}
+
+// Every documented request example is valid against its own schema, and the codec runs it into a
+// response that conforms to the documented one.
+TEST(OpenApi, CapabilityExamplesRunAndConform) {
+  const std::string presets = SOFTTUNE_SOURCE_DIR "/presets";
+  const std::map<std::string, std::function<json(const json&)>> contracts = {
+      {"/api/v1/simulate", [&](const json& q) { return softtune::codec::run_simulate(q, presets); }},
+      {"/api/v1/accuracy", [](const json& q) { return softtune::codec::run_accuracy(q); }},
+      {"/api/v1/stability", [](const json& q) { return softtune::codec::run_stability(q); }},
+  };
+  for (const auto& [path, contract] : contracts) {
+    const json& body = openapi_document()["paths"][path]["post"]["requestBody"]["content"]["application/json"];
+    const json& schema = softtune::http::testing::resolve(body["schema"]);
+    auto e = softtune::codec::validate_json_schema(body["example"], schema, openapi_document());
+    EXPECT_FALSE(e) << path << ": " << (e ? e->pointer + " " + e->rule : "");
+    EXPECT_EQ(conformance_error(path, "post", 200, "application/json", contract(body["example"])), "") << path;
   }
 }
