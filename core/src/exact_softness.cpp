@@ -17,6 +17,8 @@ namespace {
 struct PoleTerms {
   double one_minus_product;  // (1 - z1)(1 - z2) = 1 + P - S
   double sum_minus_2p;       // S - 2P
+  double product;            // P = z1 z2 = exp(-2 zeta omega h)
+  double one_minus_p;        // 1 - P, without cancellation when P is near 1
 };
 
 PoleTerms pole_terms(double omega, double zeta, double h) {
@@ -24,15 +26,17 @@ PoleTerms pole_terms(double omega, double zeta, double h) {
     const double e = std::exp(-zeta * omega * h);
     const double one_minus_e = -std::expm1(-zeta * omega * h);
     const double half_theta = 0.5 * omega * std::sqrt(1.0 - zeta * zeta) * h;
-    const double one_minus_cos = 2.0 * std::sin(half_theta) * std::sin(half_theta);
-    return {one_minus_e * one_minus_e + 2.0 * e * one_minus_cos, 2.0 * e * (one_minus_e - one_minus_cos)};
+    const double sin_half = std::sin(half_theta);
+    const double one_minus_cos = 2.0 * sin_half * sin_half;
+    return {one_minus_e * one_minus_e + 2.0 * e * one_minus_cos, 2.0 * e * (one_minus_e - one_minus_cos), e * e,
+            one_minus_e * (1.0 + e)};
   }
   const double root = std::sqrt(zeta * zeta - 1.0);
   const double s_slow = -omega / (zeta + root);  // = -omega (zeta - root) without cancellation
   const double s_fast = -omega * (zeta + root);
   const double z1 = std::exp(s_slow * h), z2 = std::exp(s_fast * h);
   const double d1 = -std::expm1(s_slow * h), d2 = -std::expm1(s_fast * h);
-  return {d1 * d2, z1 * d2 + z2 * d1};
+  return {d1 * d2, z1 * d2 + z2 * d1, z1 * z2, d1 + d2 - d1 * d2};
 }
 
 }  // namespace
@@ -46,8 +50,8 @@ ExactSpring exact_spring(double mass, double omega, double damping_ratio, double
     out.softness = softness_from_spring(0.0, 0.0, h);
     return out;
   }
-  const double P = std::exp(-2.0 * damping_ratio * out.omega * h);
   const PoleTerms t = pole_terms(out.omega, damping_ratio, h);
+  const double P = t.product;
   out.spring.stiffness = mass * t.one_minus_product / (P * h * h);
   out.spring.damping = mass * t.sum_minus_2p / (P * h);
   if (!std::isfinite(out.spring.stiffness) || !std::isfinite(out.spring.damping)) {
@@ -62,8 +66,8 @@ ExactSpring exact_spring(double mass, double omega, double damping_ratio, double
     out.softness = {0.0, 0.0, SoftnessKind::unrepresentable};
     return out;
   }
-  // c' + h k' = m (1 - P) / (P h), with expm1 to keep precision when P is near 1.
-  const double denominator = mass * -std::expm1(-2.0 * damping_ratio * out.omega * h) / (P * h);
+  // c' + h k' = m (1 - P) / (P h).
+  const double denominator = mass * t.one_minus_p / (P * h);
   const double gamma = 1.0 / denominator;
   if (!(denominator > 0.0) || std::isinf(gamma)) {
     out.softness = {0.0, 0.0, SoftnessKind::unrepresentable};
