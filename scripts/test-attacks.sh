@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# The attack suite against the real `softtune serve` on 127.0.0.1 (scripts/attacks.py): chunked and
+# declared 100 MB bodies, a gzip bomb, a 1 MB header line, 10 000 headers, path traversal variants and
+# slowloris (SOFTTUNE_SLOWLORIS_SECONDS, default 20). Needs build/softtune (scripts/build.sh).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+python3 scripts/attacks.py build/softtune --slowloris-seconds "${SOFTTUNE_SLOWLORIS_SECONDS:-20}" "$@"
