@@ -11,6 +11,7 @@ import argparse
 import gzip
 import http.client
 import json
+import multiprocessing
 import os
 import socket
 import subprocess
@@ -32,54 +33,77 @@ def status_kb(pid, key):
     return 0
 
 
-class Monitor:
-    """Samples RSS every 20 ms and probes health every 25 ms until stopped."""
-
-    def __init__(self, pid, port):
-        self.pid, self.port = pid, port
-        self.peak_rss_kb = 0
-        self.latencies_ms = []
-        self.failures = 0
-        self.stop = threading.Event()
-        self.threads = [threading.Thread(target=self._sample), threading.Thread(target=self._probe)]
-
-    def _sample(self):
-        while not self.stop.is_set():
-            self.peak_rss_kb = max(self.peak_rss_kb, status_kb(self.pid, "VmRSS"))
-            time.sleep(0.02)
-
-    def _probe(self):
-        while not self.stop.is_set():
+def monitor(pid, port, stop, results):
+    """Samples RSS every 20 ms and probes health every 25 ms on fresh connections until `stop` is set;
+    runs in its own process so the attacking threads cannot delay the probes."""
+    latencies, failures, peak = [], 0, 0
+    next_probe = time.monotonic()
+    while not stop.is_set():
+        peak = max(peak, status_kb(pid, "VmRSS"))
+        if time.monotonic() >= next_probe:
             t0 = time.perf_counter()
             try:
-                c = http.client.HTTPConnection(HOST, self.port, timeout=2)
+                c = http.client.HTTPConnection(HOST, port, timeout=2)
                 c.request("GET", "/api/v1/health")
                 r = c.getresponse()
                 r.read()
                 c.close()
-                if r.status != 200:
-                    self.failures += 1
+                if r.status == 200:
+                    latencies.append((time.perf_counter() - t0) * 1000)
                 else:
-                    self.latencies_ms.append((time.perf_counter() - t0) * 1000)
+                    failures += 1
             except OSError:
-                self.failures += 1
-            time.sleep(0.025)
+                failures += 1
+            next_probe = time.monotonic() + 0.025
+        time.sleep(0.005)
+    results.put((peak, latencies, failures))
+
+
+class Monitor:
+    def __init__(self, pid, port):
+        self.stop = multiprocessing.Event()
+        self.results = multiprocessing.Queue()
+        self.process = multiprocessing.Process(target=monitor, args=(pid, port, self.stop, self.results))
 
     def __enter__(self):
-        for t in self.threads:
-            t.start()
+        self.process.start()
+        time.sleep(0.1)
         return self
 
     def __exit__(self, *exc):
         self.stop.set()
-        for t in self.threads:
-            t.join()
+        self.peak_rss_kb, self.latencies_ms, self.failures = self.results.get(timeout=30)
+        self.process.join()
 
     def p99_ms(self):
         if not self.latencies_ms:
             return float("inf")
         s = sorted(self.latencies_ms)
         return s[min(len(s) - 1, int(0.99 * len(s)))]
+
+
+def sustained(attack, seconds=3.0, workers=4):
+    """Runs `attack` (one round, returns a dict with "ok") on `workers` threads again and again for
+    `seconds`; the summary of the rounds."""
+    rounds, bad, lock = [], [], threading.Lock()
+    end = time.monotonic() + seconds
+
+    def loop():
+        while time.monotonic() < end:
+            r = attack()
+            with lock:
+                rounds.append(r)
+                if not r["ok"]:
+                    bad.append(r)
+
+    threads = [threading.Thread(target=loop) for _ in range(workers)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    out = {k: v for k, v in rounds[0].items() if k != "ok"}
+    out.update({"rounds": len(rounds), "concurrent": workers, "bad_rounds": bad[:3], "ok": not bad})
+    return out
 
 
 def connect(port, timeout=5):
@@ -125,14 +149,17 @@ def attack_chunked_100mb(port):
     s.sendall(b"POST /api/v1/tune HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
               b"Transfer-Encoding: chunked\r\n\r\n")
     block = b"10000\r\n" + b"[" * 0x10000 + b"\r\n"
-    sent = send_until_refused(s, (block for _ in range(100 * 16)), time.monotonic() + 20)
+    sent = send_until_refused(s, (block for _ in range(100 * 16)), time.monotonic() + 10)
     status = read_status(s)
     s.close()
     return {"sent_bytes": sent, "status": status, "ok": status in (0, 400, 411, 413, 415, 501)}
 
 
+BOMB = None
+
+
 def attack_gzip_bomb(port):
-    bomb = gzip.compress(b"0" * (200 << 20), 9)
+    bomb = BOMB
     s = connect(port)
     s.sendall(b"POST /api/v1/tune HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
               b"Content-Encoding: gzip\r\nContent-Length: " + str(len(bomb)).encode() + b"\r\n\r\n")
@@ -154,7 +181,7 @@ def attack_declared_100mb(port):
     return {"sent_bytes": sent, "status": status, "ok": status in (0, 413)}
 
 
-def attack_huge_header_line(port, repeat=20):
+def attack_huge_header_line(port, repeat=1):
     statuses = []
     for _ in range(repeat):
         s = connect(port)
@@ -167,7 +194,7 @@ def attack_huge_header_line(port, repeat=20):
             "ok": all(st in (0, 400, 413, 431) for st in statuses)}
 
 
-def attack_many_headers(port, repeat=20):
+def attack_many_headers(port, repeat=1):
     statuses = []
     headers = b"".join(b"X-H%d: v\r\n" % i for i in range(10000))
     for _ in range(repeat):
@@ -184,15 +211,19 @@ def attack_slowloris(port, seconds, connections=300):
     """Many connections each trickling one header byte per second: the per-request read deadline must
     close them, and they must not starve the health probes."""
     socks = []
+    start = time.monotonic()
     for _ in range(connections):
+        if time.monotonic() > start + seconds / 2:
+            break
         try:
-            s = connect(port, timeout=2)
+            s = connect(port, timeout=0.5)
             s.sendall(b"GET /api/v1/health HTTP/1.1\r\nHost: x\r\n")
+            s.setblocking(False)
             socks.append(s)
         except OSError:
             pass
     opened = len(socks)
-    end = time.monotonic() + seconds
+    end = start + seconds
     closed_by_server = 0
     while time.monotonic() < end and socks:
         alive = []
@@ -220,7 +251,7 @@ TRAVERSALS = [
 ]
 
 
-def attack_path_traversal(port, rounds=20):
+def attack_path_traversal(port, rounds=1):
     leaks, statuses = [], set()
     for _ in range(rounds):
         for path in TRAVERSALS:
@@ -263,6 +294,8 @@ def main():
     ap.add_argument("softtune")
     ap.add_argument("--slowloris-seconds", type=float, default=20)
     ap.add_argument("--json")
+    ap.add_argument("--known-failure", action="append", default=[],
+                    help="an attack that is known to fail: reported, but does not fail the run")
     args = ap.parse_args()
 
     server = subprocess.Popen([args.softtune, "serve", "--host", HOST, "--port", "0"], stdout=subprocess.PIPE,
@@ -270,13 +303,15 @@ def main():
     try:
         line = server.stdout.readline()
         port = int(line.rsplit(":", 1)[1].split("/")[0])
+        global BOMB
+        BOMB = gzip.compress(b"0" * (200 << 20), 9)
         attacks = [
-            ("chunked_100mb", lambda: attack_chunked_100mb(port)),
-            ("declared_100mb", lambda: attack_declared_100mb(port)),
-            ("gzip_bomb", lambda: attack_gzip_bomb(port)),
-            ("header_line_1mb", lambda: attack_huge_header_line(port)),
-            ("headers_10000", lambda: attack_many_headers(port)),
-            ("path_traversal", lambda: attack_path_traversal(port)),
+            ("chunked_100mb", lambda: sustained(lambda: attack_chunked_100mb(port))),
+            ("declared_100mb", lambda: sustained(lambda: attack_declared_100mb(port))),
+            ("gzip_bomb", lambda: sustained(lambda: attack_gzip_bomb(port))),
+            ("header_line_1mb", lambda: sustained(lambda: attack_huge_header_line(port))),
+            ("headers_10000", lambda: sustained(lambda: attack_many_headers(port))),
+            ("path_traversal", lambda: sustained(lambda: attack_path_traversal(port))),
             ("slowloris", lambda: attack_slowloris(port, args.slowloris_seconds)),
         ]
         results, failed = {}, False
@@ -292,9 +327,13 @@ def main():
             outcome["serves_after"] = serves_normally(port)
             outcome["passed"] = (outcome["ok"] and m.peak_rss_kb < RSS_LIMIT_KB and m.failures == 0
                                  and m.p99_ms() < P99_LIMIT_MS and outcome["serves_after"])
-            failed |= not outcome["passed"]
+            known = name in args.known_failure
+            failed |= not outcome["passed"] and not known
             results[name] = outcome
-            print(f"{name:16s} {'PASS' if outcome['passed'] else 'FAIL'} " + json.dumps(outcome), flush=True)
+            verdict = "PASS" if outcome["passed"] else ("KNOWN FAIL" if known else "FAIL")
+            if outcome["passed"] and known:
+                verdict = "PASS (listed as a known failure: take it off the list)"
+            print(f"{name:16s} {verdict} " + json.dumps(outcome), flush=True)
         results["vm_hwm_mb"] = round(status_kb(server.pid, "VmHWM") / 1024, 1)
         print(f"server VmHWM (peak RSS over the whole run): {results['vm_hwm_mb']} MB")
         if args.json:

@@ -12,11 +12,11 @@ for name in tune_request request_decode simulate_request accuracy_request preset
   corpus=fuzz/corpus/$name
   mkdir -p "$scratch/$name"
   if compgen -G "fuzz/regressions/$name/*" >/dev/null; then
-    build-fuzz/fuzz/${name}_fuzz -runs=0 fuzz/regressions/$name/* 2>"$scratch/$name.replay.log" ||
+    build-fuzz/${name}_fuzz -runs=0 fuzz/regressions/$name/* 2>"$scratch/$name.replay.log" ||
       { cat "$scratch/$name.replay.log"; exit 1; }
   fi
   echo "fuzz: $name for ${seconds} s"
-  build-fuzz/fuzz/${name}_fuzz -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -max_len=16384 \
+  build-fuzz/${name}_fuzz -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -max_len=16384 \
     -artifact_prefix="$scratch/$name-" "$scratch/$name" "$corpus" 2>"$scratch/$name.log" ||
     { tail -n 60 "$scratch/$name.log"; exit 1; }
   grep -E "^(Done|#[0-9]+ +DONE)" "$scratch/$name.log" | tail -n1

@@ -37,6 +37,9 @@ inline std::string normalize_path(const std::string& path) {
   return out;
 }
 
+/// Case::field for a refusal that may name another field (its non-empty `field` is all that is checked).
+inline const std::string kAnyField = "*";
+
 namespace matrix_detail {
 
 using nlohmann::json;
@@ -58,13 +61,17 @@ inline std::string dotted(const json::json_pointer& p) { return normalize_path(p
 inline void mutate_value(std::vector<Case>& out, const std::string& route, const json& base,
                          const json::json_pointer& p, const json& value) {
   const std::string f = dotted(p);
-  auto add = [&](const std::string& what, const std::string& literal, bool must_fail) {
-    out.push_back({route, f + " = " + what, with_literal(base, p, literal), f, must_fail});
+  // Values that may be legal here but break a rule elsewhere (an empty list of oscillators leaves the
+  // scene without bodies; a changed id leaves a probe's reference dangling) may be refused under the
+  // other field's name: kAnyField.
+  auto add = [&](const std::string& what, const std::string& literal, bool must_fail, bool elsewhere = false) {
+    out.push_back({route, f + " = " + what, with_literal(base, p, literal), elsewhere ? kAnyField : f, must_fail});
   };
   add("1e999", "1e999", true);
   add("-1e999", "-1e999", true);
-  add("\"NaN\"", "\"NaN\"", true);
-  add("\"Infinity\"", "\"-Infinity\"", true);
+  // As strings these are wrong types for numbers, but legal names and ids.
+  add("\"NaN\"", "\"NaN\"", !value.is_string(), value.is_string());
+  add("\"Infinity\"", "\"-Infinity\"", !value.is_string(), value.is_string());
   add("null", "null", true);
   if (value.is_number()) {
     add("-1", "-1", false);
@@ -76,14 +83,14 @@ inline void mutate_value(std::vector<Case>& out, const std::string& route, const
     add("[] (array)", "[]", true);
   } else if (value.is_string()) {
     add("42 (number)", "42", true);
-    add("\"\" (empty)", "\"\"", false);
-    add("a 100 kB string", "\"" + std::string(100000, 'a') + "\"", false);
+    add("\"\" (empty)", "\"\"", false, true);
+    add("a 100 kB string", "\"" + std::string(100000, 'a') + "\"", false, true);
   } else if (value.is_boolean()) {
     add("\"true\" (string)", "\"true\"", true);
     add("1 (number)", "1", true);
   } else if (value.is_array()) {
     add("{} (object)", "{}", true);
-    add("[] (empty)", "[]", false);
+    add("[] (empty)", "[]", false, true);
     std::string huge = "[";
     for (int i = 0; i < 200000; ++i) huge += i ? ",1" : "1";
     add("200000 elements", huge + "]", true);
@@ -96,7 +103,7 @@ inline void mutate_value(std::vector<Case>& out, const std::string& route, const
   const json::json_pointer parent = p.parent_pointer();
   if (removed[parent].is_object()) {
     removed[parent].erase(p.back());
-    out.push_back({route, f + " removed", removed.dump(), f, false});
+    out.push_back({route, f + " removed", removed.dump(), kAnyField, false});
   }
 }
 
@@ -202,9 +209,10 @@ inline std::vector<Case> all_cases(const std::string& presets_dir) {
   whole_body(out, "preview", json{{"preset", "oscillator"}, {"frames", 12}}, "preset",
              R"({"preset": "oscillator", "frequency_hz": 2, "damping_ratio": 0.2, "effective_mass": 1})");
 
-  for (const std::string name : {"../schema", "..%2fschema", "%2e%2e", "schema", "chain.json", "CHAIN", "chain%00",
+  const std::vector<std::string> names = {"../schema", "..%2fschema", "%2e%2e", "schema", "chain.json", "CHAIN", "chain%00",
                                  std::string("chain\0x", 7), "", "/etc/passwd", "....//....//etc/passwd",
-                                 std::string(5000, 'a'), "\xff\xfe", "nope"}) {
+                                          std::string(5000, 'a'), "\xff\xfe", "nope"};
+  for (const std::string& name : names) {
     out.push_back({"presets", "preset name \"" + name.substr(0, 40) + "\"", name, std::nullopt, true});
   }
   return out;

@@ -12,8 +12,6 @@
 #include <string>
 #include <vector>
 
-#include "../http/openapi_conformance.h"
-#include "../http/test_server.h"
 #include "bad_input_cases.h"
 #include "codec/accuracy_codec.h"
 #include "codec/json_reader.h"
@@ -22,6 +20,10 @@
 #include "codec/scene_codec.h"
 #include "codec/stability_codec.h"
 #include "codec/tune_codec.h"
+// After Eigen (through the codec headers): cpp-httplib brings <resolv.h>, whose `_res` macro breaks
+// Eigen's parameters of that name.
+#include "../http/openapi_conformance.h"
+#include "../http/test_server.h"
 
 namespace softtune::security {
 namespace {
@@ -61,14 +63,21 @@ bool all_finite(const json& j) {
 }
 
 /// The Problem's field and the mutated path name the same place: equal, or one holds the other (a
-/// missing nested object is reported at its parent; a wrong array at its element).
+/// missing nested object is reported at its parent; a wrong array at its element). A scene's schema
+/// problems name the JSON pointer inside the scene ("/world/fps" for "scene.world.fps"), so a reported
+/// path that ends the mutated one also names it.
 bool names_field(const std::string& reported, const std::string& mutated) {
+  if (mutated == kAnyField) return !reported.empty();
   const std::string r = normalize_path(reported);
   const std::string m = normalize_path(mutated);
   if (r.empty() || m.empty()) return r == m || !r.empty();
   auto holds = [](const std::string& outer, const std::string& inner) {
     return inner.rfind(outer, 0) == 0 && (inner.size() == outer.size() || inner[outer.size()] == '.');
   };
+  for (std::size_t dot = m.find('.'); dot != std::string::npos; dot = m.find('.', dot + 1)) {
+    const std::string tail = m.substr(dot + 1);
+    if (holds(r, tail) || holds(tail, r)) return true;
+  }
   return holds(r, m) || holds(m, r);
 }
 
