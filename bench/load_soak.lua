@@ -1,11 +1,10 @@
 -- wrk script for bench/load_soak.sh: a mix of routes a studio's page and CI hit. Each thread cycles
 -- through health, tune (64 different requests: cache misses, then hits), a preview request (cached
 -- after the first), preview frames and the filmstrip, the page, the OpenAPI document and metrics.
--- Counts statuses per class and prints them with the latency percentiles at the end.
+-- Counts statuses per class (globals, which wrk's thread:get can read) and prints them with the latency percentiles at the end.
 local preview_id = nil
 local requests = {}
 local counter = 0
-local statuses = {}
 local threads = {}
 
 function setup(thread)
@@ -14,7 +13,7 @@ end
 
 function init(args)
   preview_id = args[1]
-  statuses = {ok = 0, client = 0, server = 0}
+  ok_count, client_count, server_count = 0, 0, 0
   local h = {["Content-Type"] = "application/json"}
   local function add(method, path, body, headers) table.insert(requests, wrk.format(method, path, headers, body)) end
   for i = 0, 63 do
@@ -41,19 +40,20 @@ end
 
 function response(status, headers, body)
   if status >= 500 then
-    statuses.server = statuses.server + 1
+    server_count = server_count + 1
   elseif status >= 400 then
-    statuses.client = statuses.client + 1
+    client_count = client_count + 1
   else
-    statuses.ok = statuses.ok + 1
+    ok_count = ok_count + 1
   end
 end
 
 function done(summary, latency, requests)
   local ok, client, server = 0, 0, 0
   for _, t in ipairs(threads) do
-    local s = t:get("statuses")
-    ok, client, server = ok + s.ok, client + s.client, server + s.server
+    ok = ok + t:get("ok_count")
+    client = client + t:get("client_count")
+    server = server + t:get("server_count")
   end
   io.write(string.format("LOAD requests=%d duration_s=%.1f rps=%.0f ok=%d status4xx=%d status5xx=%d " ..
     "socket_errors=%d timeouts=%d p50_ms=%.2f p90_ms=%.2f p99_ms=%.2f p999_ms=%.2f max_ms=%.2f\n",

@@ -9,8 +9,12 @@ cd "$(dirname "$0")/.."
 softtune=${1:-build/softtune}
 seconds=${SOFTTUNE_SOAK_SECONDS:-60}
 connections=${SOFTTUNE_SOAK_CONNECTIONS:-16}
+# One worker thread serves one connection for its whole keep-alive life (up to 1000 requests), so
+# connections beyond --threads wait in the queue: the server gets as many threads as wrk has connections
+# (with the default 8 and 16 connections, half the requests wait up to seconds: README "Limits and security").
+threads=${SOFTTUNE_SOAK_THREADS:-$connections}
 work=$(mktemp -d)
-"$softtune" serve --host 127.0.0.1 --port 0 >"$work/serve.log" 2>&1 &
+"$softtune" serve --host 127.0.0.1 --port 0 --threads "$threads" >"$work/serve.log" 2>&1 &
 pid=$!
 trap 'kill $pid 2>/dev/null || true; wait $pid 2>/dev/null || true; rm -rf "$work"' EXIT
 for _ in $(seq 100); do grep -q serving "$work/serve.log" && break; sleep 0.1; done
@@ -20,7 +24,7 @@ rss() { awk -v k="$1:" '$1 == k {print $2}' /proc/$pid/status; }
 
 id=$(curl -sf -H 'Content-Type: application/json' -d '{"preset": "oscillator", "frames": 8, "size": "320x180"}' \
   "$url/api/v1/preview" | python3 -c 'import json,sys; print(json.load(sys.stdin)["id"])')
-echo "soak: server pid $pid on $url, preview $id; rss at start $(rss VmRSS) kB"
+echo "soak: server pid $pid on $url ($threads threads, $connections connections), preview $id; rss at start $(rss VmRSS) kB"
 wrk -t2 -c"$connections" -d10s -s bench/load_soak.lua "$url" -- "$id" >"$work/warmup.txt"
 rss_warm=$(rss VmRSS)
 ( while kill -0 $pid 2>/dev/null; do r=$(rss VmRSS); echo "$r"; sleep 0.5; done ) >"$work/rss.txt" &
