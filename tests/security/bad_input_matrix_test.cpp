@@ -6,7 +6,6 @@
 // their routes call (the same JSON in, the same Problem out).
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -20,6 +19,7 @@
 #include "codec/scene_codec.h"
 #include "codec/stability_codec.h"
 #include "codec/tune_codec.h"
+#include "harnesses.h"
 // After Eigen (through the codec headers): cpp-httplib brings <resolv.h>, whose `_res` macro breaks
 // Eigen's parameters of that name.
 #include "../http/openapi_conformance.h"
@@ -51,17 +51,6 @@ Outcome through_codec(const std::function<json(const json&)>& contract, const st
   }
 }
 
-/// True when every number in `j` is finite.
-bool all_finite(const json& j) {
-  if (j.is_number_float()) return std::isfinite(j.get<double>());
-  if (j.is_structured()) {
-    for (const json& e : j) {
-      if (!all_finite(e)) return false;
-    }
-  }
-  return true;
-}
-
 /// The Problem's field and the mutated path name the same place: equal, or one holds the other (a
 /// missing nested object is reported at its parent; a wrong array at its element). A scene's schema
 /// problems name the JSON pointer inside the scene ("/world/fps" for "scene.world.fps"), so a reported
@@ -85,7 +74,7 @@ void check(const Case& c, const Outcome& o) {
   SCOPED_TRACE(c.route + " / " + c.name + " / body: " + c.body.substr(0, 300));
   SCOPED_TRACE("answer: " + o.body.dump().substr(0, 400));
   EXPECT_LT(o.status, 500) << "a server error";
-  EXPECT_TRUE(all_finite(o.body)) << "a non-finite number";
+  EXPECT_TRUE(fuzz::all_finite(o.body)) << "a non-finite number";
   if (o.status >= 400) {
     EXPECT_GE(o.status, 400);
     if (c.field) {
