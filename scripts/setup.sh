@@ -15,6 +15,7 @@ packages=(
   libcpp-httplib-dev                 # server: HTTP
   chromium                           # browser tests
   wrk                                # bench: HTTP load
+  clang-14 libclang-rt-14-dev python3  # security: libFuzzer harnesses, attack suite
 )
 
 missing=()

@@ -6,22 +6,56 @@
 
 namespace softtune::codec {
 
+namespace {
+
+// One open object or array while parsing, to name the field a parse error is about.
+struct OpenValue {
+  bool array = false;
+  std::set<std::string> keys;  ///< keys seen (objects), to refuse duplicates
+  std::string key;             ///< the key being read (objects)
+  std::size_t index = 0;       ///< the element being read (arrays)
+};
+
+// The dotted path of the value being read: "constraint.anchor_a[1]".
+std::string open_path(const std::vector<OpenValue>& open) {
+  std::string path;
+  for (const OpenValue& v : open) {
+    if (v.array) {
+      path += "[" + std::to_string(v.index) + "]";
+    } else if (!v.key.empty()) {
+      path += (path.empty() ? "" : ".") + v.key;
+    }
+  }
+  return path;
+}
+
+}  // namespace
+
 nlohmann::json parse_json(std::string_view text) {
-  // Keys seen in each open object, to refuse duplicates (nlohmann keeps the last one silently).
-  std::vector<std::set<std::string>> open_objects;
-  std::string last_key;  // names the field when a value fails to parse (e.g. a number overflowing 1e308)
-  auto callback = [&open_objects, &last_key](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+  // nlohmann keeps the last of duplicated keys silently, and its errors do not say where: the open
+  // objects and arrays are followed here to refuse duplicates and name the field of a failed value
+  // (e.g. a number overflowing 1e308) by its whole path.
+  std::vector<OpenValue> open;
+  auto callback = [&open](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
     using E = nlohmann::json::parse_event_t;
     if (depth > kMaxJsonDepth) {
       throw malformed_json("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     }
-    if (event == E::object_start) open_objects.emplace_back();
-    if (event == E::object_end && !open_objects.empty()) open_objects.pop_back();
-    if (event == E::key && !open_objects.empty()) {
+    // A finished element of an array moves the array on to its next index.
+    const auto element_done = [&open] {
+      if (!open.empty() && open.back().array) ++open.back().index;
+    };
+    if (event == E::object_start || event == E::array_start) open.push_back({event == E::array_start, {}, {}, 0});
+    if ((event == E::object_end || event == E::array_end) && !open.empty()) {
+      open.pop_back();
+      element_done();
+    }
+    if (event == E::value) element_done();
+    if (event == E::key && !open.empty()) {
       const std::string& key = parsed.get_ref<const std::string&>();
-      last_key = key;
-      if (!open_objects.back().insert(key).second) {
-        throw Problem(400, "Malformed JSON", key, "duplicated key \"" + key + "\"");
+      open.back().key = key;
+      if (!open.back().keys.insert(key).second) {
+        throw Problem(400, "Malformed JSON", open_path(open), "duplicated key \"" + key + "\"");
       }
     }
     return true;
@@ -29,7 +63,7 @@ nlohmann::json parse_json(std::string_view text) {
   try {
     return nlohmann::json::parse(text.begin(), text.end(), callback);
   } catch (const nlohmann::json::out_of_range& e) {
-    throw Problem(400, "Malformed JSON", last_key, std::string("number out of range (must be finite): ") + e.what());
+    throw Problem(400, "Malformed JSON", open_path(open), std::string("number out of range (must be finite): ") + e.what());
   } catch (const nlohmann::json::exception& e) {
     throw malformed_json(e.what());
   }

@@ -341,6 +341,8 @@ json requested_scene_document(ObjectReader& r, const json& request, const std::s
     if (r.has("preset") && r.has("scene")) throw invalid_field("scene", "give either preset or scene, not both");
     if (auto name = r.string("preset")) return load_preset(presets_dir, *name);
     json scene_doc = *r.raw("scene");
+    // The schema would name the scene's root "" (its own JSON pointer); the request's field is "scene".
+    if (!scene_doc.is_object()) throw invalid_field("scene", "must be a JSON object (a scene, as in presets/*.json)");
     validate_preset(scene_doc, load_schema(presets_dir), "scene");
     return scene_doc;
   }

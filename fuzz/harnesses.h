@@ -1,0 +1,93 @@
+#pragma once
+// The body of every libFuzzer harness, shared with tests/security/fuzz_regressions_test.cpp, which
+// replays the committed corpora and every crash found (fuzz/regressions/<harness>/) in the plain build.
+// Each takes any byte string; bad input must end as a Problem, and an answer must never hold a
+// non-finite number (abort: libFuzzer records a crash, the test run fails).
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+
+#include "codec/accuracy_codec.h"
+#include "codec/json_reader.h"
+#include "codec/preset_loader.h"
+#include "codec/preview_service.h"
+#include "codec/problem.h"
+#include "codec/scene_codec.h"
+#include "codec/stability_codec.h"
+#include "codec/tune_codec.h"
+
+namespace softtune::fuzz {
+
+inline bool all_finite(const nlohmann::json& j) {
+  if (j.is_number()) return std::isfinite(j.get<double>());
+  if (j.is_structured()) {
+    for (const auto& e : j) {
+      if (!all_finite(e)) return false;
+    }
+  }
+  return true;
+}
+
+/// Aborts when an answer holds a non-finite number; dumps it as a route would.
+inline void check_answer(const nlohmann::json& out) {
+  if (!all_finite(out)) std::abort();
+  (void)out.dump();
+}
+
+inline const std::string& presets_dir() {
+  static const std::string dir = SOFTTUNE_SOURCE_DIR "/presets";
+  return dir;
+}
+
+/// Runs `f`; a Problem is the expected end of bad input.
+template <typename F>
+void expecting_problems(F&& f) {
+  try {
+    f();
+  } catch (const codec::Problem&) {
+  }
+}
+
+/// A tune request body: parse_json -> decode -> validate -> tune -> encode (the CLI's and the route's path).
+inline void tune_request(std::string_view text) {
+  expecting_problems([&] { check_answer(codec::run_tune(codec::parse_json(text))); });
+}
+
+/// Any body through every JSON route's decoder: tune, accuracy, stability, the preview plan.
+inline void request_decode(std::string_view text) {
+  nlohmann::json doc;
+  try {
+    doc = codec::parse_json(text);
+  } catch (const codec::Problem&) {
+    return;
+  }
+  expecting_problems([&] { (void)codec::decode_tune_request(doc); });
+  expecting_problems([&] { (void)codec::decode_accuracy_request(doc); });
+  expecting_problems([&] { (void)codec::decode_stability_request(doc); });
+  expecting_problems([&] { (void)codec::plan_preview(doc, presets_dir()); });
+}
+
+/// A simulate request ({"preset"}, {"scene"} or a bare scene): schema -> decode_scene -> run -> encode.
+inline void simulate_request(std::string_view text) {
+  expecting_problems([&] { check_answer(codec::run_simulate(codec::parse_json(text), presets_dir())); });
+}
+
+/// An accuracy request: decode -> work-precision report -> encode.
+inline void accuracy_request(std::string_view text) {
+  expecting_problems([&] { check_answer(codec::run_accuracy(codec::parse_json(text))); });
+}
+
+/// A preset file as load_preset reads it (strict parse, the directory's schema), then decoded to a scene.
+inline void preset_load(std::string_view text) {
+  static const nlohmann::json schema = codec::load_schema(presets_dir());
+  expecting_problems([&] {
+    const nlohmann::json preset = codec::parse_json(text);
+    codec::validate_preset(preset, schema, "fuzz.json");
+    (void)codec::decode_scene(preset);
+  });
+}
+
+}  // namespace softtune::fuzz

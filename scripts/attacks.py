@@ -1,0 +1,352 @@
+#!/usr/bin/env python3
+"""Attacks on a real `softtune serve` process on 127.0.0.1, each bounded in time.
+
+During every attack a sampler reads the server's VmRSS/VmHWM from /proc/PID/status and a prober asks
+GET /api/v1/health on fresh connections; each attack passes when the peak RSS stays under 100 MB, the
+probe p99 under 100 ms with no failed probe, and afterwards health and a tune request answer normally.
+Usage: scripts/attacks.py path/to/softtune [--slowloris-seconds 20] [--json out.json]
+Only 127.0.0.1 is ever contacted. Exit status 1 when any attack fails.
+"""
+import argparse
+import gzip
+import http.client
+import json
+import multiprocessing
+import os
+import socket
+import subprocess
+import sys
+import threading
+import time
+
+HOST = "127.0.0.1"
+RSS_LIMIT_KB = 100 * 1024
+P99_LIMIT_MS = 100.0
+TUNE_BODY = b'{"frequency_hz": 5, "damping_ratio": 0.5, "effective_mass": 1}'
+
+
+def status_kb(pid, key):
+    with open(f"/proc/{pid}/status") as f:
+        for line in f:
+            if line.startswith(key + ":"):
+                return int(line.split()[1])
+    return 0
+
+
+def monitor(pid, port, stop, results):
+    """Samples RSS every 20 ms and probes health every 25 ms on fresh connections until `stop` is set;
+    runs in its own process so the attacking threads cannot delay the probes."""
+    latencies, failures, peak = [], 0, 0
+    next_probe = time.monotonic()
+    while not stop.is_set():
+        peak = max(peak, status_kb(pid, "VmRSS"))
+        if time.monotonic() >= next_probe:
+            t0 = time.perf_counter()
+            try:
+                c = http.client.HTTPConnection(HOST, port, timeout=2)
+                c.request("GET", "/api/v1/health")
+                r = c.getresponse()
+                r.read()
+                c.close()
+                if r.status == 200:
+                    latencies.append((time.perf_counter() - t0) * 1000)
+                else:
+                    failures += 1
+            except OSError:
+                failures += 1
+            next_probe = time.monotonic() + 0.025
+        time.sleep(0.005)
+    results.put((peak, latencies, failures))
+
+
+class Monitor:
+    def __init__(self, pid, port):
+        self.stop = multiprocessing.Event()
+        self.results = multiprocessing.Queue()
+        self.process = multiprocessing.Process(target=monitor, args=(pid, port, self.stop, self.results))
+
+    def __enter__(self):
+        self.process.start()
+        time.sleep(0.1)
+        return self
+
+    def __exit__(self, *exc):
+        self.stop.set()
+        self.peak_rss_kb, self.latencies_ms, self.failures = self.results.get(timeout=30)
+        self.process.join()
+
+    def p99_ms(self):
+        if not self.latencies_ms:
+            return float("inf")
+        s = sorted(self.latencies_ms)
+        return s[min(len(s) - 1, int(0.99 * len(s)))]
+
+
+def sustained(attack, seconds=3.0, workers=4):
+    """Runs `attack` (one round, returns a dict with "ok") on `workers` threads again and again for
+    `seconds`; the summary of the rounds."""
+    rounds, bad, lock = [], [], threading.Lock()
+    end = time.monotonic() + seconds
+
+    def loop():
+        while time.monotonic() < end:
+            r = attack()
+            with lock:
+                rounds.append(r)
+                if not r["ok"]:
+                    bad.append(r)
+
+    threads = [threading.Thread(target=loop) for _ in range(workers)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    out = {k: v for k, v in rounds[0].items() if k != "ok"}
+    out.update({"rounds": len(rounds), "concurrent": workers, "bad_rounds": bad[:3], "ok": not bad})
+    return out
+
+
+def connect(port, timeout=5):
+    s = socket.create_connection((HOST, port), timeout=timeout)
+    s.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+    return s
+
+
+def read_status(s, deadline_s=5):
+    """The status code of the answer on `s` (0 when the server closed without one)."""
+    s.settimeout(deadline_s)
+    data = b""
+    try:
+        while b"\r\n" not in data:
+            chunk = s.recv(4096)
+            if not chunk:
+                break
+            data += chunk
+    except OSError:
+        pass
+    if data.startswith(b"HTTP/1.") and len(data) >= 12:
+        return int(data[9:12])
+    return 0
+
+
+def send_until_refused(s, chunks, deadline):
+    """Sends chunks until the server stops reading (closed or reset) or the deadline; bytes sent."""
+    sent = 0
+    s.settimeout(2)
+    try:
+        for chunk in chunks:
+            if time.monotonic() > deadline:
+                break
+            s.sendall(chunk)
+            sent += len(chunk)
+    except OSError:
+        pass
+    return sent
+
+
+def attack_chunked_100mb(port):
+    s = connect(port)
+    s.sendall(b"POST /api/v1/tune HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+              b"Transfer-Encoding: chunked\r\n\r\n")
+    block = b"10000\r\n" + b"[" * 0x10000 + b"\r\n"
+    sent = send_until_refused(s, (block for _ in range(100 * 16)), time.monotonic() + 10)
+    status = read_status(s)
+    s.close()
+    return {"sent_bytes": sent, "status": status, "ok": status in (0, 400, 411, 413, 415, 501)}
+
+
+BOMB = None
+
+
+def attack_gzip_bomb(port):
+    bomb = BOMB
+    s = connect(port)
+    s.sendall(b"POST /api/v1/tune HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+              b"Content-Encoding: gzip\r\nContent-Length: " + str(len(bomb)).encode() + b"\r\n\r\n")
+    sent = send_until_refused(s, [bomb], time.monotonic() + 10)
+    status = read_status(s)
+    s.close()
+    return {"compressed_bytes": len(bomb), "inflated_bytes": 200 << 20, "sent_bytes": sent, "status": status,
+            "ok": status in (0, 400, 413, 415)}
+
+
+def attack_declared_100mb(port):
+    s = connect(port)
+    s.sendall(b"POST /api/v1/tune HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+              b"Content-Length: 104857600\r\n\r\n")
+    block = b" " * (1 << 20)
+    sent = send_until_refused(s, (block for _ in range(100)), time.monotonic() + 15)
+    status = read_status(s)
+    s.close()
+    return {"sent_bytes": sent, "status": status, "ok": status in (0, 413)}
+
+
+def attack_huge_header_line(port, repeat=1):
+    statuses = []
+    for _ in range(repeat):
+        s = connect(port)
+        s.sendall(b"GET /api/v1/health HTTP/1.1\r\nHost: x\r\nX-Big: ")
+        send_until_refused(s, (b"a" * 65536 for _ in range(16)), time.monotonic() + 5)
+        send_until_refused(s, [b"\r\n\r\n"], time.monotonic() + 1)
+        statuses.append(read_status(s))
+        s.close()
+    return {"requests": repeat, "header_bytes": 1 << 20, "statuses": sorted(set(statuses)),
+            "ok": all(st in (0, 400, 413, 431) for st in statuses)}
+
+
+def attack_many_headers(port, repeat=1):
+    statuses = []
+    headers = b"".join(b"X-H%d: v\r\n" % i for i in range(10000))
+    for _ in range(repeat):
+        s = connect(port)
+        send_until_refused(s, [b"GET /api/v1/health HTTP/1.1\r\nHost: x\r\n" + headers + b"\r\n"],
+                           time.monotonic() + 5)
+        statuses.append(read_status(s))
+        s.close()
+    return {"requests": repeat, "headers": 10000, "statuses": sorted(set(statuses)),
+            "ok": all(st in (0, 400, 431) for st in statuses)}
+
+
+def attack_slowloris(port, seconds, connections=300):
+    """Many connections each trickling one header byte per second: the per-request read deadline must
+    close them, and they must not starve the health probes."""
+    socks = []
+    start = time.monotonic()
+    for _ in range(connections):
+        if time.monotonic() > start + seconds / 2:
+            break
+        try:
+            s = connect(port, timeout=0.5)
+            s.sendall(b"GET /api/v1/health HTTP/1.1\r\nHost: x\r\n")
+            s.setblocking(False)
+            socks.append(s)
+        except OSError:
+            pass
+    opened = len(socks)
+    end = start + seconds
+    closed_by_server = 0
+    while time.monotonic() < end and socks:
+        alive = []
+        for s in socks:
+            try:
+                s.sendall(b"X")
+                alive.append(s)
+            except OSError:
+                closed_by_server += 1
+                s.close()
+        socks = alive
+        time.sleep(1)
+    for s in socks:
+        s.close()
+    return {"connections": opened, "seconds": seconds, "closed_by_server": closed_by_server, "ok": True}
+
+
+TRAVERSALS = [
+    "/../../../../etc/passwd", "/%2e%2e/%2e%2e/%2e%2e/etc/passwd", "/..%2f..%2f..%2fetc%2fpasswd",
+    "/%2e%2e%2f%2e%2e%2fetc%2fpasswd", "/index.html%00../../etc/passwd", "/%00", "/..%5c..%5cetc%5cpasswd",
+    "/%252e%252e/%252e%252e/etc/passwd", "/....//....//etc/passwd", "/%c0%ae%c0%ae/%c0%ae%c0%ae/etc/passwd",
+    "/api/v1/../../../etc/passwd", "/api/v1/presets/..%2f..%2fetc%2fpasswd", "/api/v1/presets/%2e%2e",
+    "/api/v1/preview/..%2f..%2fetc%2fpasswd/0.png", "//etc/passwd", "/./././etc/passwd", "/%2e/%2e%2e/etc/passwd",
+    "/web/../CMakeLists.txt", "/..%2fCMakeLists.txt", "/%2e%2e/CMakeLists.txt",
+]
+
+
+def attack_path_traversal(port, rounds=1):
+    leaks, statuses = [], set()
+    for _ in range(rounds):
+        for path in TRAVERSALS:
+            s = connect(port)
+            s.sendall(b"GET " + path.encode() + b" HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")
+            s.settimeout(5)
+            data = b""
+            try:
+                while True:
+                    chunk = s.recv(65536)
+                    if not chunk:
+                        break
+                    data += chunk
+            except OSError:
+                pass
+            s.close()
+            if b"root:" in data or b"cmake_minimum_required" in data:
+                leaks.append(path)
+            if data.startswith(b"HTTP/1."):
+                statuses.add(int(data[9:12]))
+    return {"paths": len(TRAVERSALS), "requests": rounds * len(TRAVERSALS), "statuses": sorted(statuses),
+            "leaks": sorted(set(leaks)), "ok": not leaks and all(400 <= st < 500 for st in statuses)}
+
+
+def serves_normally(port):
+    c = http.client.HTTPConnection(HOST, port, timeout=5)
+    c.request("GET", "/api/v1/health")
+    health = c.getresponse().status
+    c.close()
+    c = http.client.HTTPConnection(HOST, port, timeout=10)
+    c.request("POST", "/api/v1/tune", TUNE_BODY, {"Content-Type": "application/json"})
+    r = c.getresponse()
+    body = json.loads(r.read())
+    c.close()
+    return health == 200 and r.status == 200 and "soft" in json.dumps(body)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("softtune")
+    ap.add_argument("--slowloris-seconds", type=float, default=20)
+    ap.add_argument("--json")
+    ap.add_argument("--known-failure", action="append", default=[],
+                    help="an attack that is known to fail: reported, but does not fail the run")
+    args = ap.parse_args()
+
+    server = subprocess.Popen([args.softtune, "serve", "--host", HOST, "--port", "0"], stdout=subprocess.PIPE,
+                              stderr=subprocess.DEVNULL, text=True)
+    try:
+        line = server.stdout.readline()
+        port = int(line.rsplit(":", 1)[1].split("/")[0])
+        global BOMB
+        BOMB = gzip.compress(b"0" * (200 << 20), 9)
+        attacks = [
+            ("chunked_100mb", lambda: sustained(lambda: attack_chunked_100mb(port))),
+            ("declared_100mb", lambda: sustained(lambda: attack_declared_100mb(port))),
+            ("gzip_bomb", lambda: sustained(lambda: attack_gzip_bomb(port))),
+            ("header_line_1mb", lambda: sustained(lambda: attack_huge_header_line(port))),
+            ("headers_10000", lambda: sustained(lambda: attack_many_headers(port))),
+            ("path_traversal", lambda: sustained(lambda: attack_path_traversal(port))),
+            ("slowloris", lambda: attack_slowloris(port, args.slowloris_seconds)),
+        ]
+        results, failed = {}, False
+        for name, attack in attacks:
+            t0 = time.monotonic()
+            with Monitor(server.pid, port) as m:
+                outcome = attack()
+            outcome["seconds"] = round(time.monotonic() - t0, 2)
+            outcome["peak_rss_mb"] = round(m.peak_rss_kb / 1024, 1)
+            outcome["health_probes"] = len(m.latencies_ms)
+            outcome["health_failures"] = m.failures
+            outcome["health_p99_ms"] = round(m.p99_ms(), 2)
+            outcome["serves_after"] = serves_normally(port)
+            outcome["passed"] = (outcome["ok"] and m.peak_rss_kb < RSS_LIMIT_KB and m.failures == 0
+                                 and m.p99_ms() < P99_LIMIT_MS and outcome["serves_after"])
+            known = name in args.known_failure
+            failed |= not outcome["passed"] and not known
+            results[name] = outcome
+            verdict = "PASS" if outcome["passed"] else ("KNOWN FAIL" if known else "FAIL")
+            if outcome["passed"] and known:
+                verdict = "PASS (listed as a known failure: take it off the list)"
+            print(f"{name:16s} {verdict} " + json.dumps(outcome), flush=True)
+        results["vm_hwm_mb"] = round(status_kb(server.pid, "VmHWM") / 1024, 1)
+        print(f"server VmHWM (peak RSS over the whole run): {results['vm_hwm_mb']} MB")
+        if args.json:
+            with open(args.json, "w") as f:
+                json.dump(results, f, indent=2)
+        return 1 if failed else 0
+    finally:
+        server.terminate()
+        try:
+            server.wait(10)
+        except subprocess.TimeoutExpired:
+            server.kill()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
