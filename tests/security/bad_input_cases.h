@@ -146,7 +146,7 @@ inline void whole_body(std::vector<Case>& out, const std::string& route, const j
   add("a bare NaN", "NaN", std::nullopt);
   add("invalid UTF-8 in a string", "{\"" + top_key + "\": \"\xff\xfe\xc3\x28\"}", std::nullopt);
   add("invalid UTF-8 in a key", "{\"\xc0\xaf\": 1}", std::nullopt);
-  add("a NUL byte", std::string("{\"") + top_key + std::string("\": \"a\0b\"}", 11), std::nullopt);
+  add("a NUL byte", std::string("{\"") + top_key + std::string("\": \"a\0b\"}", 9), std::nullopt);
   add("nesting 100000 deep", std::string(100000, '[') + std::string(100000, ']'), std::nullopt);
   add("objects nested 5000 deep", [] {
     std::string s;
