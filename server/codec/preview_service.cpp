@@ -141,14 +141,12 @@ json PreviewService::start(const json& request, const std::string& presets_dir, 
     }
   }
   json out = answer(*job, url_prefix);
-  if (!job->from_cache() && job->progress().finished) {
+  const render::PreviewProgress p = job->progress();
+  if (!job->from_cache() && p.finished && !p.failed) {
     // The stages that ran this time: the simulation, then rendering.
     StageList all = *plan.prepare_stages;
-    const render::PreviewProgress p = job->progress();
-    if (p.finished && !p.failed) {
-      const StageList& render_stages = job->wait()->stages;
-      for (int i = 0; i < render_stages.count; ++i) all.add(render_stages.items[i]);
-    }
+    const StageList& render_stages = job->wait()->stages;
+    for (int i = 0; i < render_stages.count; ++i) all.add(render_stages.items[i]);
     out["stages"] = stages_json(all);
   }
   out["warnings"] = plan.warnings;
