@@ -4,7 +4,7 @@
 During every attack a sampler reads the server's VmRSS/VmHWM from /proc/PID/status and a prober asks
 GET /api/v1/health on fresh connections; each attack passes when the peak RSS stays under 100 MB, the
 probe p99 under 100 ms with no failed probe, and afterwards health and a tune request answer normally.
-Usage: scripts/attacks.py path/to/softtune [--slowloris-seconds 20] [--json out.json]
+Usage: scripts/attacks.py path/to/softtune [--slowloris-seconds 20] [--json out.json] [--only NAME]
 Only 127.0.0.1 is ever contacted. Exit status 1 when any attack fails.
 """
 import argparse
@@ -207,27 +207,46 @@ def attack_many_headers(port, repeat=1):
             "ok": all(st in (0, 400, 431) for st in statuses)}
 
 
-def attack_slowloris(port, seconds, connections=300):
-    """Many connections each trickling one header byte per second: the per-request read deadline must
-    close them, and they must not starve the health probes."""
-    socks = []
+def attack_slowloris(port, seconds, connections=1000):
+    """Up to `connections` connections at once, each trickling one header byte per second, for the whole
+    `seconds`: the ones the server cuts off (408 at the request deadline) are reopened at once, so the
+    pressure never drops. The health probes must not notice."""
+    def open_one():
+        s = connect(port, timeout=0.5)
+        s.sendall(b"GET /api/v1/health HTTP/1.1\r\nHost: x\r\n")
+        s.setblocking(False)
+        return s
+
+    socks, opened, refused, answers = [], 0, 0, {}
     start = time.monotonic()
-    for _ in range(connections):
-        if time.monotonic() > start + seconds / 2:
-            break
-        try:
-            s = connect(port, timeout=0.5)
-            s.sendall(b"GET /api/v1/health HTTP/1.1\r\nHost: x\r\n")
-            s.setblocking(False)
-            socks.append(s)
-        except OSError:
-            pass
-    opened = len(socks)
     end = start + seconds
     closed_by_server = 0
-    while time.monotonic() < end and socks:
+    while time.monotonic() < end:
+        # Top up to `connections`, spread over the first half for the first fill.
+        target = connections if time.monotonic() > start + seconds / 2 else \
+            int(connections * (time.monotonic() - start) / (seconds / 2)) + 1
+        while len(socks) < target and time.monotonic() < end:
+            try:
+                socks.append(open_one())
+                opened += 1
+            except OSError:
+                refused += 1
+                break
         alive = []
         for s in socks:
+            try:
+                data = s.recv(4096)
+                if data:
+                    answers[data[9:12].decode(errors="replace")] = answers.get(data[9:12].decode(errors="replace"), 0) + 1
+                closed_by_server += 1
+                s.close()
+                continue
+            except BlockingIOError:
+                pass
+            except OSError:
+                closed_by_server += 1
+                s.close()
+                continue
             try:
                 s.sendall(b"X")
                 alive.append(s)
@@ -235,10 +254,12 @@ def attack_slowloris(port, seconds, connections=300):
                 closed_by_server += 1
                 s.close()
         socks = alive
-        time.sleep(1)
+        time.sleep(0.2)
+    held_at_end = len(socks)
     for s in socks:
         s.close()
-    return {"connections": opened, "seconds": seconds, "closed_by_server": closed_by_server, "ok": True}
+    return {"connections_opened": opened, "held_at_end": held_at_end, "connect_failures": refused,
+            "seconds": seconds, "closed_by_server": closed_by_server, "answers": answers, "ok": True}
 
 
 TRAVERSALS = [
@@ -293,9 +314,10 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("softtune")
     ap.add_argument("--slowloris-seconds", type=float, default=20)
+    ap.add_argument("--slowloris-connections", type=int, default=1000,
+                    help="slow connections held at once (the server holds 1024 before closing the least useful)")
     ap.add_argument("--json")
-    ap.add_argument("--known-failure", action="append", default=[],
-                    help="an attack that is known to fail: reported, but does not fail the run")
+    ap.add_argument("--only", action="append", default=[], help="run just this attack (repeatable)")
     args = ap.parse_args()
 
     server = subprocess.Popen([args.softtune, "serve", "--host", HOST, "--port", "0"], stdout=subprocess.PIPE,
@@ -312,10 +334,14 @@ def main():
             ("header_line_1mb", lambda: sustained(lambda: attack_huge_header_line(port))),
             ("headers_10000", lambda: sustained(lambda: attack_many_headers(port))),
             ("path_traversal", lambda: sustained(lambda: attack_path_traversal(port))),
-            ("slowloris", lambda: attack_slowloris(port, args.slowloris_seconds)),
+            ("slowloris", lambda: attack_slowloris(port, args.slowloris_seconds, args.slowloris_connections)),
+            # More slow connections than the server holds (1024): it must close the oldest, not the newest.
+            ("slowloris_flood", lambda: attack_slowloris(port, args.slowloris_seconds / 2, 3 * args.slowloris_connections)),
         ]
         results, failed = {}, False
         for name, attack in attacks:
+            if args.only and name not in args.only:
+                continue
             t0 = time.monotonic()
             with Monitor(server.pid, port) as m:
                 outcome = attack()
@@ -327,12 +353,9 @@ def main():
             outcome["serves_after"] = serves_normally(port)
             outcome["passed"] = (outcome["ok"] and m.peak_rss_kb < RSS_LIMIT_KB and m.failures == 0
                                  and m.p99_ms() < P99_LIMIT_MS and outcome["serves_after"])
-            known = name in args.known_failure
-            failed |= not outcome["passed"] and not known
+            failed |= not outcome["passed"]
             results[name] = outcome
-            verdict = "PASS" if outcome["passed"] else ("KNOWN FAIL" if known else "FAIL")
-            if outcome["passed"] and known:
-                verdict = "PASS (listed as a known failure: take it off the list)"
+            verdict = "PASS" if outcome["passed"] else "FAIL"
             print(f"{name:16s} {verdict} " + json.dumps(outcome), flush=True)
         results["vm_hwm_mb"] = round(status_kb(server.pid, "VmHWM") / 1024, 1)
         print(f"server VmHWM (peak RSS over the whole run): {results['vm_hwm_mb']} MB")

@@ -4,11 +4,14 @@
 //  - The payload limit skips chunked bodies and gzip bodies inflate without a limit: the pre-routing
 //    hook refuses Transfer-Encoding, Content-Encoding and bodies without Content-Length, before the
 //    body is read (request_policy.h), and closes the connection since the body was left unread.
-//  - Its thread pool queues without bound and its read timeout is per read(), so a client trickling
-//    one byte every few seconds holds a worker forever. Connections are served here instead
-//    (process_and_close_socket is overridden, as its own SSLServer does): a bounded queue that answers
-//    503 when full, a deadline for reading each whole request, a cap on the request head's bytes (431),
-//    and idle keep-alive connections closed after a timeout or a number of requests.
+//  - Its thread pool queues without bound, a connection holds a worker from its first byte to its close,
+//    and its read timeout is per read(), so clients trickling one byte every few seconds (slowloris) or
+//    merely keeping connections open take every worker. Here the library only accepts: each connection
+//    waits in the ConnectionGate (one epoll loop) until its request head is complete, and only then
+//    takes a worker (process_and_close_socket is overridden, as its own SSLServer does). The gate bounds
+//    the connections it holds, the heads waiting for a worker (503 above) and the time to send a head
+//    (408); a worker bounds the time left for the body and the head's bytes (431), and hands an idle
+//    keep-alive connection back to the gate.
 
 #include "http/http_transport.h"
 
@@ -31,6 +34,7 @@
 #include <vector>
 
 #include "codec/problem.h"
+#include "http/connection_gate.h"
 #include "http/request_policy.h"
 
 namespace softtune::http {
@@ -38,8 +42,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// What the hooks of one connection share. A connection is served by one thread from accept to close,
-// so a thread-local pointer reaches it from the library's callbacks.
+// What the hooks of one connection share while a worker serves it, reached through a thread-local
+// pointer from the library's callbacks.
 struct ConnectionState {
   Clock::time_point request_start;
   std::size_t head_bytes = 0;  ///< request line and header bytes consumed so far
@@ -49,8 +53,10 @@ struct ConnectionState {
   std::string_view route;      ///< the route pattern that answered (metrics label), empty if none ran
 };
 thread_local ConnectionState* t_connection = nullptr;
-// Set while the accept thread runs a connection that found the queue full: it gets 503 at once.
-thread_local bool t_shed = false;
+
+// How long a worker waits for the next request on a keep-alive connection before handing it back to
+// the gate: a busy client sends it within a round trip, and serving it here saves two thread hand-offs.
+constexpr std::chrono::milliseconds kKeepAliveGrace{2};
 
 int remaining_ms(Clock::time_point deadline) {
   const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
@@ -86,18 +92,31 @@ void peer_address(int sock, bool local, std::string& ip, int& port) {
   ip = buf;
 }
 
-// A socket stream whose reads share one deadline per request and count the head's bytes.
+// A socket stream that starts with the bytes the gate already read, whose reads share one deadline per
+// request and count the head's bytes.
 class LimitedStream final : public httplib::Stream {
  public:
-  LimitedStream(int sock, ConnectionState& state, const TransportOptions& options)
-      : sock_(sock), state_(state), options_(options) {}
+  LimitedStream(int sock, ConnectionState& state, const TransportOptions& options, std::string received)
+      : sock_(sock), state_(state), options_(options), buffer_(std::move(received)) {}
 
-  void start_request() {
+  void start_request(Clock::time_point first_byte) {
     state_ = ConnectionState{};
-    state_.request_start = Clock::now();
-    deadline_ = state_.request_start + options_.request_read_timeout;
+    state_.request_start = first_byte;
+    deadline_ = first_byte + options_.request_read_timeout;
   }
-  bool has_buffered() const { return begin_ < end_; }
+  bool has_buffered() const { return begin_ < buffer_.size(); }
+  bool head_buffered() const { return head_complete(std::string_view(buffer_).substr(begin_)); }
+  std::string take_buffered() {
+    std::string rest = buffer_.substr(begin_);
+    buffer_.clear();
+    begin_ = 0;
+    return rest;
+  }
+  // Appends what arrives within `wait`; false when the client closed or the socket failed.
+  bool read_for(std::chrono::milliseconds wait) {
+    if (wait_for(sock_, POLLIN, static_cast<int>(wait.count())) <= 0) return true;
+    return receive() > 0;
+  }
 
   bool is_readable() const override { return has_buffered() || wait_for(sock_, POLLIN, remaining_ms(deadline_)) > 0; }
   bool is_writable() const override {
@@ -107,16 +126,14 @@ class LimitedStream final : public httplib::Stream {
   // Reads try the socket first and wait only when it has nothing: one system call per read, not two.
   ssize_t read(char* ptr, size_t size) override {
     if (!has_buffered()) {
-      ssize_t n = ::recv(sock_, buffer_.data(), buffer_.size(), MSG_DONTWAIT);
+      ssize_t n = receive();
       if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
         if (wait_for(sock_, POLLIN, remaining_ms(deadline_)) <= 0) return -1;
-        n = ::recv(sock_, buffer_.data(), buffer_.size(), MSG_DONTWAIT);
+        n = receive();
       }
       if (n <= 0) return n;
-      begin_ = 0;
-      end_ = static_cast<std::size_t>(n);
     }
-    std::size_t n = std::min(size, end_ - begin_);
+    std::size_t n = std::min(size, buffer_.size() - begin_);
     if (!state_.head_done) {
       if (state_.head_bytes + n > limits::kMaxHeaderBytes) {
         state_.head_overflow = true;
@@ -152,69 +169,37 @@ class LimitedStream final : public httplib::Stream {
   socket_t socket() const override { return sock_; }
 
  private:
+  // One non-blocking recv appended to the buffer (consumed bytes are dropped first).
+  ssize_t receive() {
+    if (begin_ == buffer_.size()) {
+      buffer_.clear();
+      begin_ = 0;
+    }
+    std::array<char, 4096> chunk;
+    const ssize_t n = ::recv(sock_, chunk.data(), chunk.size(), MSG_DONTWAIT);
+    if (n > 0) buffer_.append(chunk.data(), static_cast<std::size_t>(n));
+    return n;
+  }
+
   int sock_;
   ConnectionState& state_;
   const TransportOptions& options_;
   Clock::time_point deadline_ = Clock::now();
-  std::array<char, 4096> buffer_{};
-  std::size_t begin_ = 0, end_ = 0;
+  std::string buffer_;
+  std::size_t begin_ = 0;
   mutable std::string remote_ip_, local_ip_;
   mutable int remote_port_ = -1, local_port_ = -1;
 };
 
-// A fixed pool whose queue of waiting connections is bounded; past the bound the connection is run
-// on the accepting thread with t_shed set, which answers 503 without reading much.
-class BoundedQueue final : public httplib::TaskQueue {
+// The library's task queue, reduced to running the accept loop's hand-off inline: the override of
+// process_and_close_socket passes the socket on to the gate this queue owns.
+class GateQueue final : public httplib::TaskQueue {
  public:
-  BoundedQueue(int threads, std::size_t max_queued) : max_queued_(max_queued) {
-    for (int i = 0; i < threads; ++i) workers_.emplace_back([this] { work(); });
-  }
-
-  void enqueue(std::function<void()> fn) override {
-    {
-      std::unique_lock lock(mutex_);
-      if (jobs_.size() < max_queued_) {
-        jobs_.push_back(std::move(fn));
-        lock.unlock();
-        ready_.notify_one();
-        return;
-      }
-    }
-    t_shed = true;
-    fn();
-    t_shed = false;
-  }
-
-  void shutdown() override {
-    {
-      const std::lock_guard lock(mutex_);
-      stopping_ = true;
-    }
-    ready_.notify_all();
-    for (std::thread& t : workers_) t.join();
-  }
-
- private:
-  void work() {
-    for (;;) {
-      std::function<void()> fn;
-      {
-        std::unique_lock lock(mutex_);
-        ready_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
-        if (jobs_.empty()) return;
-        fn = std::move(jobs_.front());
-        jobs_.pop_front();
-      }
-      fn();
-    }
-  }
-
-  const std::size_t max_queued_;
-  std::mutex mutex_;
-  std::condition_variable ready_;
-  std::deque<std::function<void()>> jobs_;
-  std::vector<std::thread> workers_;
-  bool stopping_ = false;
+  GateQueue(GateOptions options, ConnectionGate::Serve serve, ConnectionGate::Refuse refuse)
+      : gate(options, std::move(serve), std::move(refuse)) {}
+  void enqueue(std::function<void()> fn) override { fn(); }
+  void shutdown() override { gate.shutdown(); }
+  ConnectionGate gate;
 };
 
 HttpRequest plain_request(const httplib::Request& req) {
@@ -286,98 +271,86 @@ class LibraryServer final : public httplib::Server {
  public:
   LibraryServer(Service& service, const TransportOptions& options) : service_(service), options_(options) {}
 
+  // The library listens with a backlog of 5: a burst of connections (a page loading, a load test, an
+  // attack) overflows it, and a dropped SYN costs the client a one-second retransmission. Linux takes a
+  // second listen() on a listening socket as a new backlog.
+  void widen_backlog() { ::listen(svr_sock_, SOMAXCONN); }
+
+  // The library's accept loop creates its task queue when it starts listening: the gate comes with it.
+  httplib::TaskQueue* new_gate_queue() {
+    GateOptions g;
+    g.threads = options_.threads;
+    g.max_open = options_.max_open_connections;
+    g.max_ready = options_.max_queued;
+    g.max_head_bytes = limits::kMaxHeaderBytes;
+    g.request_read_timeout = options_.request_read_timeout;
+    g.keep_alive_timeout = options_.keep_alive_timeout;
+    auto* queue = new GateQueue(
+        g, [this](ReadyConnection& c) { return serve(c); },
+        [this](Refusal why, std::string_view received) { return refusal(why, received); });
+    gate_ = &queue->gate;
+    return queue;
+  }
+
  private:
+  // Runs on the accept thread: the connection goes to the gate, which closes it in the end.
   bool process_and_close_socket(socket_t sock) override {
-    bool ret = false;
-    if (t_shed) {
-      shed(sock);
-    } else {
-      ret = serve_connection(sock);
-    }
-    ::shutdown(sock, SHUT_RDWR);
-    ::close(sock);
-    return ret;
-  }
-
-  // After a refusal the client may still be sending the body we did not read; closing now would reset
-  // the connection and could destroy the answer before the client reads it. So: send FIN, discard what
-  // still arrives for a moment (bounded in bytes and time), then close.
-  static void lingering_close(int sock) {
-    ::shutdown(sock, SHUT_WR);
-    const Clock::time_point deadline = Clock::now() + std::chrono::milliseconds(500);
-    std::size_t discarded = 0;
-    char buf[16384];
-    while (discarded < 2 * limits::kMaxBodyBytes && wait_for(sock, POLLIN, remaining_ms(deadline)) > 0) {
-      const ssize_t n = ::recv(sock, buf, sizeof buf, 0);
-      if (n <= 0) break;
-      discarded += static_cast<std::size_t>(n);
-    }
-  }
-
-  bool serve_connection(int sock) {
     const int one = 1;
     ::setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+    gate_->admit(sock);
+    return true;
+  }
+
+  // Runs on a worker with a whole head received: serves it, and the requests that follow at once.
+  AfterServe serve(ReadyConnection& c) {
     ConnectionState state;
     t_connection = &state;
-    LimitedStream stream(sock, state, options_);
-    bool ret = false;
-    for (std::size_t served = 0; served < options_.keep_alive_max_requests; ++served) {
-      if (!stream.has_buffered() && !wait_for_request(sock)) break;
-      stream.start_request();
+    LimitedStream stream(c.sock, state, options_, std::move(c.received));
+    AfterServe after = AfterServe::close;
+    for (;;) {
+      stream.start_request(c.request_start);
       bool closed = false;
-      const bool last = served + 1 == options_.keep_alive_max_requests;
-      ret = process_request(stream, last, closed, nullptr);
+      const bool last = c.served + 1 >= options_.keep_alive_max_requests;
+      const bool ok = process_request(stream, last, closed, nullptr);
+      ++c.served;
       if (state.close_after || state.head_overflow) {
-        lingering_close(sock);
+        after = AfterServe::drain_and_close;
         break;
       }
-      if (!ret || closed) break;
+      if (!ok || closed || last) break;
+      if (!stream.head_buffered() && !stream.read_for(kKeepAliveGrace)) break;
+      c.request_start = Clock::now();
+      if (!stream.head_buffered()) {
+        c.received = stream.take_buffered();
+        after = AfterServe::keep_alive;
+        break;
+      }
     }
     t_connection = nullptr;
-    return ret;
+    return after;
   }
 
-  // Waits for the next request on an idle connection in short slices, so stop() closes it promptly.
-  bool wait_for_request(int sock) const {
-    const Clock::time_point idle_deadline = Clock::now() + options_.keep_alive_timeout;
-    while (svr_sock_ != INVALID_SOCKET) {
-      const int left = remaining_ms(idle_deadline);
-      if (left == 0) return false;
-      const int n = wait_for(sock, POLLIN, std::min(left, 100));
-      if (n != 0) return n > 0;
-    }
-    return false;
-  }
-
-  // 503 without handing the connection to a worker: drain what the client has sent (briefly, so the
-  // close does not reset the connection before the answer is read), answer, close.
-  void shed(int sock) {
+  // The answer the gate sends itself: 503 when too many heads wait for a worker, 408 when a head is
+  // not complete in time.
+  std::string refusal(Refusal why, std::string_view received) {
     const Clock::time_point start = Clock::now();
-    std::string head;
-    char buf[4096];
-    const Clock::time_point deadline = start + std::chrono::milliseconds(50);
-    while (head.find("\r\n\r\n") == std::string::npos && head.size() < limits::kMaxHeaderBytes &&
-           wait_for(sock, POLLIN, remaining_ms(deadline)) > 0) {
-      const ssize_t n = ::recv(sock, buf, sizeof buf, MSG_DONTWAIT);
-      if (n <= 0) break;
-      head.append(buf, static_cast<std::size_t>(n));
-    }
-    const codec::Problem p(503, "Service unavailable", "",
-                           "the server is busy: " + std::to_string(options_.max_queued) +
-                               " connections are already waiting; retry shortly");
+    const codec::Problem p =
+        why == Refusal::busy
+            ? codec::Problem(503, "Service unavailable", "",
+                             "the server is busy: " + std::to_string(options_.max_queued) +
+                                 " requests are already waiting for a worker; retry shortly")
+            : codec::Problem(408, "Request timeout", "",
+                             "the request line and headers must arrive within " +
+                                 std::to_string(options_.request_read_timeout.count()) + " ms");
     const std::string body = codec::problem_json(p).dump();
-    const std::string response = "HTTP/1.1 503 Service Unavailable\r\nContent-Type: application/problem+json\r\n"
-                                 "Retry-After: 1\r\nConnection: close\r\nContent-Length: " +
-                                 std::to_string(body.size()) + "\r\n\r\n" + body;
-    ::send(sock, response.data(), response.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
-    ::shutdown(sock, SHUT_WR);
-    while (wait_for(sock, POLLIN, remaining_ms(deadline)) > 0 && ::recv(sock, buf, sizeof buf, MSG_DONTWAIT) > 0) {
-    }
-    const std::string line = head.substr(0, head.find("\r\n"));
-    const std::string method = line.substr(0, line.find(' '));
-    const std::size_t path_start = line.find(' ') == std::string::npos ? line.size() : line.find(' ') + 1;
-    const std::string path = line.substr(path_start, line.find(' ', path_start) - path_start);
-    finish(method, path, 503, start);
+    const std::string_view line = received.substr(0, received.find("\r\n"));
+    const std::string_view method = line.substr(0, line.find(' '));
+    const std::size_t path_start = line.find(' ') == std::string_view::npos ? line.size() : line.find(' ') + 1;
+    const std::string_view path = line.substr(path_start, line.find(' ', path_start) - path_start);
+    finish(method, path, p.status, start);
+    return "HTTP/1.1 " + std::to_string(p.status) + (why == Refusal::busy ? " Service Unavailable" : " Request Timeout") +
+           "\r\nContent-Type: application/problem+json\r\n" + (why == Refusal::busy ? "Retry-After: 1\r\n" : "") +
+           "Connection: close\r\nContent-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body;
   }
 
  public:
@@ -395,6 +368,7 @@ class LibraryServer final : public httplib::Server {
  private:
   Service& service_;
   const TransportOptions& options_;
+  ConnectionGate* gate_ = nullptr;  ///< owned by the library's task queue while listening
 };
 
 struct HttpServer::Impl {
@@ -414,9 +388,7 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
   s.set_keep_alive_timeout(std::chrono::duration_cast<std::chrono::seconds>(o.keep_alive_timeout).count());
   s.set_read_timeout(o.request_read_timeout);
   s.set_write_timeout(o.write_timeout);
-  const int threads = o.threads;
-  const std::size_t queued = o.max_queued;
-  s.new_task_queue = [threads, queued] { return new BoundedQueue(threads, queued); };
+  s.new_task_queue = [&s] { return s.new_gate_queue(); };
 
   s.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
     if (t_connection) t_connection->head_done = true;
@@ -486,11 +458,13 @@ int HttpServer::bind() {
   if (o.port == 0) {
     const int port = impl_->server.bind_to_any_port(o.host);
     if (port <= 0) throw std::runtime_error("cannot listen on " + o.host + " (any port)");
+    impl_->server.widen_backlog();
     return port;
   }
   if (!impl_->server.bind_to_port(o.host, o.port)) {
     throw std::runtime_error("cannot listen on " + o.host + ":" + std::to_string(o.port));
   }
+  impl_->server.widen_backlog();
   return o.port;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// The HTTP transport: the only part that knows cpp-httplib. It reads requests with the limits of
-// http/limits.h, refuses bad heads before their bodies are read (request_policy.h), hands plain
-// HttpRequests to the Service, logs one line per request and feeds the metrics.
+// The HTTP transport: the only part that knows cpp-httplib. Connections wait in a ConnectionGate until
+// their request head is complete; then a worker reads the rest with the limits of http/limits.h,
+// refuses bad heads before their bodies are read (request_policy.h), hands plain HttpRequests to the
+// Service, logs one line per request and feeds the metrics.
 
 #include <chrono>
 #include <cstddef>
@@ -19,7 +20,8 @@ struct TransportOptions {
   std::string host = "127.0.0.1";
   int port = 8080;  ///< 0: any free port (bind() returns it)
   int threads = limits::kDefaultThreads;
-  std::size_t max_queued = limits::kMaxQueuedConnections;
+  std::size_t max_queued = limits::kMaxQueuedConnections;  ///< complete heads waiting for a worker
+  std::size_t max_open_connections = limits::kMaxOpenConnections;
   std::chrono::milliseconds request_read_timeout = limits::kRequestReadTimeout;
   std::chrono::milliseconds write_timeout = limits::kWriteTimeout;
   std::chrono::milliseconds keep_alive_timeout = limits::kKeepAliveTimeout;

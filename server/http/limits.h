@@ -20,14 +20,20 @@ inline constexpr std::size_t kMaxHeaderLineBytes = 8192;
 /// Deepest JSON nesting accepted (400 above); nlohmann's recursive dump and copy crash on deep documents.
 inline constexpr int kMaxJsonDepth = codec::kMaxJsonDepth;
 
-/// Worker threads (one per open connection being served) and connections waiting for one; a connection
-/// arriving when kMaxQueuedConnections are already waiting gets 503 at once.
+/// Worker threads, each serving one connection whose request head is complete.
 inline constexpr int kDefaultThreads = 8;
 inline constexpr int kMaxThreads = 256;
+/// Requests with a complete head waiting for a free worker; a request arriving when this many are
+/// already waiting gets 503 at once.
 inline constexpr std::size_t kMaxQueuedConnections = 64;
+/// Connections held open while their request head arrives, idle on keep-alive, or draining after a
+/// refusal (they cost a buffer and a file descriptor, never a worker). A new connection arriving when
+/// this many are held closes one that is draining, or else the one that has waited longest.
+inline constexpr std::size_t kMaxOpenConnections = 1024;
 
 /// Reading one whole request (line, headers and body) must finish within this time, however slowly
-/// the bytes trickle in (a per-read timeout alone lets a client send one byte every few seconds forever).
+/// the bytes trickle in (a per-read timeout alone lets a client send one byte every few seconds forever);
+/// a head still incomplete then gets 408.
 inline constexpr std::chrono::milliseconds kRequestReadTimeout{10'000};
 /// Each write of a response must make progress within this time.
 inline constexpr std::chrono::milliseconds kWriteTimeout{10'000};

@@ -1,6 +1,6 @@
 // Each hardening item of the transport against a live in-process server: bodies the library would read
 // without a limit (chunked, gzip, no Content-Length, oversized), huge heads, path tricks, deep JSON,
-// a full queue, slow and idle clients. Every test is bounded to a few seconds.
+// a full queue, slow and idle clients, a full connection gate. Every test is bounded to a few seconds.
 #include <gtest/gtest.h>
 
 #include "http/limits.h"
@@ -175,14 +175,22 @@ TEST(Hardening, ARefusedBodyIsNeverParsedAsTheNextRequest) {
   EXPECT_EQ(r.find("HTTP/1.1 200"), std::string::npos) << r;
 }
 
+// The head of a tune request whose body has not arrived yet: a worker takes it and waits for the body.
+std::string partial_tune_post() {
+  return "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\nConnection: close\r\n"
+         "Content-Length: " + std::to_string(kTune.size()) + "\r\n\r\n" + kTune.substr(0, 5);
+}
+
 TEST(Hardening, FullQueueAnswers503) {
   auto options = quick_options();
   options.threads = 1;
   options.max_queued = 1;
   TestServer s(options);
   RawConnection holds_the_worker(s.port());
+  holds_the_worker.send(partial_tune_post());
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   RawConnection waits_in_the_queue(s.port());
+  waits_in_the_queue.send(partial_tune_post());
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   auto res = s.client().Get("/api/v1/health");
   ASSERT_TRUE(res);
@@ -190,10 +198,10 @@ TEST(Hardening, FullQueueAnswers503) {
   EXPECT_EQ(res->get_header_value("Retry-After"), "1");
   EXPECT_EQ(softtune::http::testing::conformance_error("/api/v1/tune", "post", 503, "application/problem+json",
                                                         json::parse(res->body)), "");
-  // Once the worker is free again, requests are served.
-  holds_the_worker.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\nConnection: close\r\n\r\n");
+  // Once the bodies arrive, both requests are served.
+  holds_the_worker.send(kTune.substr(5));
   EXPECT_EQ(status_of(holds_the_worker.receive()), 200);
-  waits_in_the_queue.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\nConnection: close\r\n\r\n");
+  waits_in_the_queue.send(kTune.substr(5));
   EXPECT_EQ(status_of(waits_in_the_queue.receive()), 200);
 }
 
@@ -203,12 +211,74 @@ TEST(Hardening, SlowClientIsCutOffAtTheRequestDeadline) {
   ASSERT_TRUE(slow.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\n"));
   // One header byte every 100 ms: each read succeeds quickly, only the whole-request deadline stops it.
   const auto start = std::chrono::steady_clock::now();
+  std::string answer;
   while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(3000) && slow.send("X")) {
-    slow.receive(std::chrono::milliseconds(100));
+    answer += slow.receive(std::chrono::milliseconds(100));
     if (slow.closed()) break;
   }
   EXPECT_TRUE(slow.closed()) << "still open after 3 s";
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(2000));
+  EXPECT_EQ(status_of(answer), 408) << answer;
+  EXPECT_EQ(softtune::http::testing::conformance_error("/api/v1/tune", "post", 408, "application/problem+json",
+                                                        json::parse(body_of(answer))), "");
+}
+
+// With one worker, clients that send their heads slowly, or keep idle connections open, must not keep
+// anyone else waiting: they wait in the gate, not in a worker.
+TEST(Hardening, SlowHeadsAndIdleConnectionsDoNotHoldWorkers) {
+  auto options = quick_options();
+  options.threads = 1;
+  options.request_read_timeout = std::chrono::milliseconds(10'000);
+  options.keep_alive_timeout = std::chrono::milliseconds(10'000);
+  TestServer s(options);
+  std::vector<std::unique_ptr<RawConnection>> slow;
+  for (int i = 0; i < 100; ++i) {
+    slow.push_back(std::make_unique<RawConnection>(s.port()));
+    slow.back()->send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\nX-Slow: ");
+  }
+  RawConnection idle(s.port());
+  idle.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\n\r\n");
+  EXPECT_EQ(status_of(idle.receive(std::chrono::milliseconds(300))), 200);
+  EXPECT_FALSE(idle.closed());
+  auto client = s.client();
+  client.set_read_timeout(2, 0);  // far below the 10 s the slow and idle connections may still wait
+  for (int i = 0; i < 5; ++i) {
+    auto res = client.Get("/api/v1/health");
+    ASSERT_TRUE(res) << "request " << i;
+    EXPECT_EQ(res->status, 200);
+  }
+  // The idle keep-alive connection is still served when it speaks again.
+  idle.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(status_of(idle.receive()), 200);
+}
+
+// When the gate holds max_open_connections, a newcomer is still served: the connection that has
+// waited longest makes room.
+TEST(Hardening, FullGateClosesTheOldestConnection) {
+  auto options = quick_options();
+  options.max_open_connections = 4;
+  TestServer s(options);
+  std::vector<std::unique_ptr<RawConnection>> idle;
+  for (int i = 0; i < 4; ++i) {
+    idle.push_back(std::make_unique<RawConnection>(s.port()));
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  RawConnection slow(s.port());
+  slow.send("GET /api/v1/health HTTP/1.1\r\n");
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  auto res = s.client().Get("/api/v1/health");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  // Two idle connections gave way (one to the slow head, one to the request), oldest first; the slow
+  // head, newer than both, stays.
+  idle[0]->receive(std::chrono::milliseconds(200));
+  idle[1]->receive(std::chrono::milliseconds(200));
+  idle[2]->receive(std::chrono::milliseconds(50));
+  EXPECT_TRUE(idle[0]->closed());
+  EXPECT_TRUE(idle[1]->closed());
+  EXPECT_FALSE(idle[2]->closed());
+  slow.send("Host: t\r\nConnection: close\r\n\r\n");
+  EXPECT_EQ(status_of(slow.receive()), 200);
 }
 
 TEST(Hardening, IdleKeepAliveConnectionsAreClosed) {

@@ -89,6 +89,7 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["default_threads"], l::kDefaultThreads);
   EXPECT_EQ(x["max_threads"], l::kMaxThreads);
   EXPECT_EQ(x["max_queued_connections"], l::kMaxQueuedConnections);
+  EXPECT_EQ(x["max_open_connections"], l::kMaxOpenConnections);
   EXPECT_EQ(x["request_read_timeout_ms"], l::kRequestReadTimeout.count());
   EXPECT_EQ(x["write_timeout_ms"], l::kWriteTimeout.count());
   EXPECT_EQ(x["keep_alive_timeout_ms"], l::kKeepAliveTimeout.count());
@@ -112,7 +113,7 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["stability_max_grid_entries"], softtune::codec::kMaxGridEntries);
   EXPECT_EQ(x["stability_max_cases"], softtune::codec::kMaxCases);
   EXPECT_EQ(x["stability_max_observe_steps"], softtune::codec::kMaxObserveSteps);
-  EXPECT_EQ(x.size(), 29u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x.size(), 30u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {

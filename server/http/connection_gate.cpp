@@ -1,0 +1,330 @@
+#include "http/connection_gate.h"
+
+#include <sys/epoll.h>
+#include <sys/eventfd.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+#include <unordered_map>
+#include <vector>
+
+namespace softtune::http {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// How often deadlines are checked: the resolution of every timeout the gate enforces.
+constexpr std::chrono::milliseconds kSweepInterval{50};
+// After a refusal the client may still be sending; closing at once would reset the connection and could
+// destroy the answer before the client reads it. Discard what arrives for this long, at most this much.
+constexpr std::chrono::milliseconds kDrainTime{500};
+constexpr std::size_t kDrainBytes = 2u << 20;
+
+struct Held {
+  std::string received;
+  Clock::time_point since;          ///< entered the gate
+  Clock::time_point request_start;  ///< first byte of the request being read (meaningful once received is not empty)
+  Clock::time_point deadline;
+  std::size_t served = 0;
+  bool draining = false;
+  std::size_t discarded = 0;
+};
+
+struct Incoming {
+  int sock;
+  Held held;
+};
+
+void close_socket(int sock) {
+  ::shutdown(sock, SHUT_RDWR);
+  ::close(sock);
+}
+
+}  // namespace
+
+bool head_complete(std::string_view received) { return received.find("\r\n\r\n") != std::string_view::npos; }
+
+struct ConnectionGate::State {
+  GateOptions options;
+  Serve serve;
+  Refuse refuse;
+  int epoll_fd = -1;
+  int wake_fd = -1;
+
+  std::mutex inbox_mutex;
+  std::vector<Incoming> inbox;  ///< sockets to take into the poll loop (new, or back from a worker)
+  bool stopping = false;
+
+  std::unordered_map<int, Held> held;  ///< touched by the poll thread only
+  std::atomic<std::size_t> held_count{0};
+
+  std::mutex ready_mutex;
+  std::condition_variable ready_cv;
+  std::deque<ReadyConnection> ready;  ///< complete heads waiting for a worker
+  bool workers_stop = false;
+
+  std::thread poller;
+  std::vector<std::thread> workers;
+
+  void wake() const {
+    const std::uint64_t one = 1;
+    [[maybe_unused]] const ssize_t n = ::write(wake_fd, &one, sizeof one);
+  }
+
+  // From any thread: hand a socket to the poll loop, or close it when the gate has stopped.
+  void take(int sock, Held h) {
+    {
+      const std::lock_guard lock(inbox_mutex);
+      if (!stopping) {
+        inbox.push_back({sock, std::move(h)});
+        sock = -1;
+      }
+    }
+    if (sock >= 0) {
+      close_socket(sock);
+      return;
+    }
+    wake();
+  }
+
+  // ---- poll thread ----
+
+  void forget(std::unordered_map<int, Held>::iterator it) {
+    ::epoll_ctl(epoll_fd, EPOLL_CTL_DEL, it->first, nullptr);
+    held.erase(it);
+    held_count.store(held.size(), std::memory_order_relaxed);
+  }
+
+  void drop(std::unordered_map<int, Held>::iterator it) {
+    const int sock = it->first;
+    forget(it);
+    close_socket(sock);
+  }
+
+  // Send an answer, half-close, and keep the socket only to discard what the client still sends.
+  static void answer_and_drain(int sock, Held& h, const std::string& response) {
+    ::send(sock, response.data(), response.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+    ::shutdown(sock, SHUT_WR);
+    h.draining = true;
+    h.discarded = 0;
+    h.deadline = Clock::now() + kDrainTime;
+  }
+
+  // Which held connection gives way to a new one: a draining one if any, else the one that has waited
+  // longest. Not the idle ones first: a connection just accepted has not sent its head yet, and must
+  // not be the first victim of clients that send theirs slowly.
+  std::unordered_map<int, Held>::iterator least_valuable() {
+    auto worst = held.begin();
+    for (auto it = held.begin(); it != held.end(); ++it) {
+      const Held& h = it->second;
+      const Held& w = worst->second;
+      if (h.draining != w.draining ? h.draining : h.since < w.since) worst = it;
+    }
+    return worst;
+  }
+
+  void insert(Incoming in) {
+    if (held.size() >= options.max_open && !held.empty()) drop(least_valuable());
+    Held& h = in.held;
+    h.since = Clock::now();
+    if (!h.draining) {
+      h.deadline = h.received.empty() ? h.since + options.keep_alive_timeout
+                                      : h.request_start + options.request_read_timeout;
+    } else {
+      h.deadline = h.since + kDrainTime;
+    }
+    epoll_event ev{};
+    ev.events = EPOLLIN | EPOLLRDHUP;
+    ev.data.fd = in.sock;
+    if (::epoll_ctl(epoll_fd, EPOLL_CTL_ADD, in.sock, &ev) != 0) {
+      close_socket(in.sock);
+      return;
+    }
+    held.insert_or_assign(in.sock, std::move(in.held));
+    held_count.store(held.size(), std::memory_order_relaxed);
+  }
+
+  // The head is complete (or too large to wait for): queue it for a worker, or answer 503 when the
+  // queue is full.
+  void hand_over(std::unordered_map<int, Held>::iterator it) {
+    const int sock = it->first;
+    Held& h = it->second;
+    {
+      const std::lock_guard lock(ready_mutex);
+      if (ready.size() < options.max_ready) {
+        ready.push_back({sock, std::move(h.received), h.request_start, h.served});
+        forget(it);
+        ready_cv.notify_one();
+        return;
+      }
+    }
+    answer_and_drain(sock, h, refuse(Refusal::busy, h.received));
+  }
+
+  void on_readable(int sock) {
+    const auto it = held.find(sock);
+    if (it == held.end()) return;
+    Held& h = it->second;
+    std::array<char, 4096> buf;
+    const ssize_t n = ::recv(sock, buf.data(), buf.size(), MSG_DONTWAIT);
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) return;
+    if (n <= 0) {
+      drop(it);
+      return;
+    }
+    if (h.draining) {
+      h.discarded += static_cast<std::size_t>(n);
+      if (h.discarded > kDrainBytes) drop(it);
+      return;
+    }
+    if (h.received.empty()) {
+      h.request_start = Clock::now();
+      h.deadline = h.request_start + options.request_read_timeout;
+    }
+    h.received.append(buf.data(), static_cast<std::size_t>(n));
+    if (head_complete(h.received) || h.received.size() > options.max_head_bytes) hand_over(it);
+  }
+
+  void sweep() {
+    const Clock::time_point now = Clock::now();
+    for (auto it = held.begin(); it != held.end();) {
+      const auto current = it++;
+      Held& h = current->second;
+      if (now < h.deadline) continue;
+      if (h.draining || h.received.empty()) {
+        drop(current);
+      } else {
+        answer_and_drain(current->first, h, refuse(Refusal::timeout, h.received));
+      }
+    }
+  }
+
+  // Returns false once the gate is stopping.
+  bool take_inbox() {
+    std::vector<Incoming> taken;
+    bool stop = false;
+    {
+      const std::lock_guard lock(inbox_mutex);
+      taken.swap(inbox);
+      stop = stopping;
+    }
+    for (Incoming& in : taken) {
+      if (stop) {
+        close_socket(in.sock);
+      } else {
+        insert(std::move(in));
+      }
+    }
+    return !stop;
+  }
+
+  void poll_loop() {
+    std::array<epoll_event, 64> events;
+    Clock::time_point next_sweep = Clock::now() + kSweepInterval;
+    for (;;) {
+      const int n = ::epoll_wait(epoll_fd, events.data(), static_cast<int>(events.size()),
+                                 static_cast<int>(kSweepInterval.count()));
+      for (int i = 0; i < n; ++i) {
+        if (events[i].data.fd == wake_fd) {
+          std::uint64_t count;
+          [[maybe_unused]] const ssize_t r = ::read(wake_fd, &count, sizeof count);
+        } else {
+          on_readable(events[i].data.fd);
+        }
+      }
+      if (!take_inbox()) break;
+      if (Clock::now() >= next_sweep) {
+        sweep();
+        next_sweep = Clock::now() + kSweepInterval;
+      }
+    }
+    for (auto& [sock, h] : held) close_socket(sock);
+    held.clear();
+    held_count.store(0);
+  }
+
+  // ---- worker threads ----
+
+  void work() {
+    for (;;) {
+      ReadyConnection c;
+      {
+        std::unique_lock lock(ready_mutex);
+        ready_cv.wait(lock, [this] { return workers_stop || !ready.empty(); });
+        if (ready.empty()) return;
+        c = std::move(ready.front());
+        ready.pop_front();
+      }
+      AfterServe after = AfterServe::close;
+      try {
+        after = serve(c);
+      } catch (...) {
+        after = AfterServe::close;
+      }
+      if (after == AfterServe::close) {
+        close_socket(c.sock);
+        continue;
+      }
+      Held h;
+      h.received = std::move(c.received);
+      h.request_start = c.request_start;
+      h.served = c.served;
+      if (after == AfterServe::drain_and_close) {
+        ::shutdown(c.sock, SHUT_WR);
+        h.draining = true;
+      }
+      take(c.sock, std::move(h));
+    }
+  }
+};
+
+ConnectionGate::ConnectionGate(GateOptions options, Serve serve, Refuse refuse) : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.options = options;
+  s.serve = std::move(serve);
+  s.refuse = std::move(refuse);
+  s.epoll_fd = ::epoll_create1(EPOLL_CLOEXEC);
+  s.wake_fd = ::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+  if (s.epoll_fd < 0 || s.wake_fd < 0) throw std::runtime_error("cannot create the connection gate's epoll or eventfd");
+  epoll_event ev{};
+  ev.events = EPOLLIN;
+  ev.data.fd = s.wake_fd;
+  ::epoll_ctl(s.epoll_fd, EPOLL_CTL_ADD, s.wake_fd, &ev);
+  s.poller = std::thread([&s] { s.poll_loop(); });
+  for (int i = 0; i < options.threads; ++i) s.workers.emplace_back([&s] { s.work(); });
+}
+
+ConnectionGate::~ConnectionGate() { shutdown(); }
+
+void ConnectionGate::admit(int sock) { state_->take(sock, Held{}); }
+
+void ConnectionGate::shutdown() {
+  State& s = *state_;
+  {
+    const std::lock_guard lock(s.inbox_mutex);
+    if (s.stopping) return;
+    s.stopping = true;
+  }
+  s.wake();
+  s.poller.join();
+  {
+    const std::lock_guard lock(s.ready_mutex);
+    s.workers_stop = true;
+  }
+  s.ready_cv.notify_all();
+  for (std::thread& t : s.workers) t.join();
+  ::close(s.epoll_fd);
+  ::close(s.wake_fd);
+}
+
+std::size_t ConnectionGate::held() const { return state_->held_count.load(std::memory_order_relaxed); }
+
+}  // namespace softtune::http

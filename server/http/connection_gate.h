@@ -1,0 +1,79 @@
+#pragma once
+// Holds open connections while their request heads arrive, so that a worker thread is taken only by a
+// connection with a whole request head to serve. Slow clients (slowloris) and idle keep-alive
+// connections then cost a buffer and a file descriptor each, never a worker: they wait in one epoll
+// loop until their head is complete, their deadline passes, or newer connections need their place.
+// Plain POSIX sockets and threads; it knows nothing of HTTP beyond where a request head ends.
+
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace softtune::http {
+
+/// True once `received` holds a whole request head (request line and headers up to the blank line).
+bool head_complete(std::string_view received);
+
+struct GateOptions {
+  int threads = 8;                ///< workers serving connections whose head is complete
+  std::size_t max_open = 1024;    ///< connections held at once (waiting for a head, idle or draining)
+  std::size_t max_ready = 64;     ///< complete heads waiting for a free worker; more get 503
+  std::size_t max_head_bytes = 16 * 1024;  ///< a head still incomplete at this size goes to a worker (which answers 431)
+  /// From a request's first byte until its head is complete; the worker gets what is left for the body.
+  std::chrono::milliseconds request_read_timeout{10'000};
+  /// A connection without any byte of a (next) request is closed after this time.
+  std::chrono::milliseconds keep_alive_timeout{5'000};
+};
+
+/// A connection handed to a worker: its socket, the bytes read so far (a whole head, possibly more),
+/// when the request's first byte arrived, and how many requests it has already served.
+struct ReadyConnection {
+  int sock = -1;
+  std::string received;
+  std::chrono::steady_clock::time_point request_start;
+  std::size_t served = 0;
+};
+
+/// What a worker says about the connection it served.
+enum class AfterServe {
+  keep_alive,       ///< wait for the next request (ReadyConnection::received holds its bytes so far)
+  close,            ///< close now
+  drain_and_close,  ///< answered while the client may still be sending: half-close, discard briefly, close
+};
+
+/// Why the gate answers a request itself.
+enum class Refusal {
+  busy,     ///< max_ready complete heads are already waiting for a worker: 503
+  timeout,  ///< the head did not arrive within request_read_timeout: 408
+};
+
+class ConnectionGate {
+ public:
+  /// Serves the requests of a connection; runs on a worker thread.
+  using Serve = std::function<AfterServe(ReadyConnection&)>;
+  /// The whole HTTP response the gate sends for a refusal, given the bytes received so far (it may log).
+  using Refuse = std::function<std::string(Refusal, std::string_view received)>;
+
+  ConnectionGate(GateOptions options, Serve serve, Refuse refuse);
+  ~ConnectionGate();
+  ConnectionGate(const ConnectionGate&) = delete;
+  ConnectionGate& operator=(const ConnectionGate&) = delete;
+
+  /// Takes ownership of a newly accepted socket. When max_open connections are already held, one
+  /// draining after a refusal, or else the one that has waited longest, is closed to make room.
+  void admit(int sock);
+  /// Closes every held connection, lets the workers finish the requests already handed to them, and
+  /// joins all threads. admit() after shutdown() closes the socket at once.
+  void shutdown();
+  /// Connections held by the gate now (waiting for a head, idle or draining), not those being served.
+  std::size_t held() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace softtune::http
