@@ -9,10 +9,9 @@ cd "$(dirname "$0")/.."
 softtune=${1:-build/softtune}
 seconds=${SOFTTUNE_SOAK_SECONDS:-60}
 connections=${SOFTTUNE_SOAK_CONNECTIONS:-16}
-# One worker thread serves one connection for its whole keep-alive life (up to 1000 requests), so
-# connections beyond --threads wait in the queue: the server gets as many threads as wrk has connections
-# (with the default 8 and 16 connections, half the requests wait up to seconds: README "Limits and security").
-threads=${SOFTTUNE_SOAK_THREADS:-$connections}
+# The server's default 8 workers: idle keep-alive connections wait in the connection gate, not in a
+# worker, so 16 connections need no more threads than requests being served at once.
+threads=${SOFTTUNE_SOAK_THREADS:-8}
 work=$(mktemp -d)
 "$softtune" serve --host 127.0.0.1 --port 0 --threads "$threads" >"$work/serve.log" 2>&1 &
 pid=$!

@@ -24,7 +24,7 @@ constexpr const char* kHelp = R"(softtune serve: the REST API under /api/v1/ and
 
   --host H       address to listen on (default 127.0.0.1)
   --port P       TCP port (default 8080; 0 picks a free one)
-  --threads N    worker threads, one per connection being served (default 8, at most 256)
+  --threads N    worker threads, one per request being served (default 8, at most 256)
   --web DIR      folder of the static page (default web/, relative to the working directory)
   --presets DIR  presets directory of /api/v1/simulate and /api/v1/presets (default: $SOFTTUNE_PRESETS,
                  else presets/, relative to the working directory)
