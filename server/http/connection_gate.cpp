@@ -69,6 +69,7 @@ struct ConnectionGate::State {
   std::mutex ready_mutex;
   std::condition_variable ready_cv;
   std::deque<ReadyConnection> ready;  ///< complete heads waiting for a worker
+  std::atomic<std::size_t> ready_count{0};
   bool workers_stop = false;
 
   std::thread poller;
@@ -148,8 +149,10 @@ struct ConnectionGate::State {
       close_socket(in.sock);
       return;
     }
-    held.insert_or_assign(in.sock, std::move(in.held));
+    const auto [it, inserted] = held.insert_or_assign(in.sock, std::move(in.held));
     held_count.store(held.size(), std::memory_order_relaxed);
+    // A worker that gave way to others may hand back a connection whose next head it already read.
+    if (!it->second.draining && head_complete(it->second.received)) hand_over(it);
   }
 
   // The head is complete (or too large to wait for): queue it for a worker, or answer 503 when the
@@ -161,6 +164,7 @@ struct ConnectionGate::State {
       const std::lock_guard lock(ready_mutex);
       if (ready.size() < options.max_ready) {
         ready.push_back({sock, std::move(h.received), h.request_start, h.served});
+        ready_count.store(ready.size(), std::memory_order_relaxed);
         forget(it);
         ready_cv.notify_one();
         return;
@@ -262,6 +266,7 @@ struct ConnectionGate::State {
         if (ready.empty()) return;
         c = std::move(ready.front());
         ready.pop_front();
+        ready_count.store(ready.size(), std::memory_order_relaxed);
       }
       AfterServe after = AfterServe::close;
       try {
@@ -324,6 +329,8 @@ void ConnectionGate::shutdown() {
   ::close(s.epoll_fd);
   ::close(s.wake_fd);
 }
+
+bool ConnectionGate::requests_waiting() const { return state_->ready_count.load(std::memory_order_relaxed) > 0; }
 
 std::size_t ConnectionGate::held() const { return state_->held_count.load(std::memory_order_relaxed); }
 

@@ -39,7 +39,7 @@ struct ReadyConnection {
 
 /// What a worker says about the connection it served.
 enum class AfterServe {
-  keep_alive,       ///< wait for the next request (ReadyConnection::received holds its bytes so far)
+  keep_alive,       ///< wait for the next request (ReadyConnection::received holds its bytes so far, maybe a whole head)
   close,            ///< close now
   drain_and_close,  ///< answered while the client may still be sending: half-close, discard briefly, close
 };
@@ -68,6 +68,8 @@ class ConnectionGate {
   /// Closes every held connection, lets the workers finish the requests already handed to them, and
   /// joins all threads. admit() after shutdown() closes the socket at once.
   void shutdown();
+  /// True while complete heads wait for a worker: a worker should then not linger on its connection.
+  bool requests_waiting() const;
   /// Connections held by the gate now (waiting for a head, idle or draining), not those being served.
   std::size_t held() const;
 

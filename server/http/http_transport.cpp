@@ -55,8 +55,10 @@ struct ConnectionState {
 thread_local ConnectionState* t_connection = nullptr;
 
 // How long a worker waits for the next request on a keep-alive connection before handing it back to
-// the gate: a busy client sends it within a round trip, and serving it here saves two thread hand-offs.
-constexpr std::chrono::milliseconds kKeepAliveGrace{2};
+// the gate, unless other requests are waiting for a worker: a busy client sends it within a round trip,
+// and serving it here saves two thread hand-offs. Checked in slices, so waiting requests cut it short.
+constexpr std::chrono::microseconds kKeepAliveGrace{2000};
+constexpr std::chrono::microseconds kGraceSlice{200};
 
 int remaining_ms(Clock::time_point deadline) {
   const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
@@ -112,9 +114,14 @@ class LimitedStream final : public httplib::Stream {
     begin_ = 0;
     return rest;
   }
-  // Appends what arrives within `wait`; false when the client closed or the socket failed.
-  bool read_for(std::chrono::milliseconds wait) {
-    if (wait_for(sock_, POLLIN, static_cast<int>(wait.count())) <= 0) return true;
+  // Appends what has arrived, waiting up to `wait` for something; false when the client closed or the
+  // socket failed.
+  bool read_for(std::chrono::microseconds wait) {
+    pollfd p{sock_, POLLIN, 0};
+    const timespec t{0, static_cast<long>(std::chrono::nanoseconds(wait).count())};
+    const int ready = ::ppoll(&p, 1, &t, nullptr);
+    if (ready < 0) return errno == EINTR;
+    if (ready == 0) return true;
     return receive() > 0;
   }
 
@@ -318,9 +325,9 @@ class LibraryServer final : public httplib::Server {
         break;
       }
       if (!ok || closed || last) break;
-      if (!stream.head_buffered() && !stream.read_for(kKeepAliveGrace)) break;
+      if (!next_head_soon(stream)) break;
       c.request_start = Clock::now();
-      if (!stream.head_buffered()) {
+      if (!stream.head_buffered() || gate_->requests_waiting()) {
         c.received = stream.take_buffered();
         after = AfterServe::keep_alive;
         break;
@@ -328,6 +335,16 @@ class LibraryServer final : public httplib::Server {
     }
     t_connection = nullptr;
     return after;
+  }
+
+  // Reads the next request's head for a moment unless others wait for a worker; false when the client
+  // closed.
+  bool next_head_soon(LimitedStream& stream) const {
+    for (auto waited = std::chrono::microseconds(0);
+         waited < kKeepAliveGrace && !stream.head_buffered() && !gate_->requests_waiting(); waited += kGraceSlice) {
+      if (!stream.read_for(kGraceSlice)) return false;
+    }
+    return true;
   }
 
   // The answer the gate sends itself: 503 when too many heads wait for a worker, 408 when a head is
