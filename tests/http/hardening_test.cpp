@@ -3,6 +3,9 @@
 // a full queue, slow and idle clients, a full connection gate. Every test is bounded to a few seconds.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <thread>
+
 #include "http/limits.h"
 #include "openapi_conformance.h"
 #include "test_server.h"
@@ -250,6 +253,47 @@ TEST(Hardening, SlowHeadsAndIdleConnectionsDoNotHoldWorkers) {
   // The idle keep-alive connection is still served when it speaks again.
   idle.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\nConnection: close\r\n\r\n");
   EXPECT_EQ(status_of(idle.receive()), 200);
+}
+
+// A client sending request after request on one keep-alive connection must not keep its worker from
+// everyone else: with one worker and 3000 requests pipelined on one connection, another client's request
+// is answered before the last of them.
+TEST(Hardening, BusyKeepAliveClientDoesNotKeepTheWorker) {
+  auto options = quick_options();
+  options.threads = 1;
+  options.keep_alive_max_requests = 100'000;
+  TestServer s(options);
+  RawConnection busy(s.port());
+  constexpr int kPipelined = 3000;
+  std::thread writer([&] {
+    for (int i = 0; i < kPipelined; ++i) {
+      busy.send(i + 1 < kPipelined ? "GET /api/v1/health HTTP/1.1\r\nHost: t\r\n\r\n"
+                                   : "GET /api/v1/health HTTP/1.1\r\nHost: t\r\nConnection: close\r\n\r\n");
+    }
+  });
+  std::atomic<bool> busy_started = false;
+  std::string busy_answers;
+  std::chrono::steady_clock::time_point busy_done;
+  std::thread reader([&] {
+    while (!busy.closed()) {
+      busy_answers += busy.receive_some();
+      busy_started = true;
+    }
+    busy_done = std::chrono::steady_clock::now();
+  });
+  while (!busy_started) std::this_thread::sleep_for(std::chrono::microseconds(100));
+  auto res = s.client().Get("/api/v1/health");
+  const auto other_done = std::chrono::steady_clock::now();
+  writer.join();
+  reader.join();
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  std::size_t answered = 0;
+  for (auto at = busy_answers.find("HTTP/1.1 200"); at != std::string::npos; at = busy_answers.find("HTTP/1.1 200", at + 1)) {
+    ++answered;
+  }
+  EXPECT_EQ(answered, static_cast<std::size_t>(kPipelined));
+  EXPECT_LT(other_done, busy_done) << "the other client waited for all " << kPipelined << " pipelined requests";
 }
 
 // When the gate holds max_open_connections, a newcomer is still served: the connection that has

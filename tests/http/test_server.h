@@ -97,7 +97,19 @@ class RawConnection {
     }
     return out;
   }
-  /// True once receive() saw the server close the connection.
+  /// What one read returns once something arrives (empty when `timeout` passes or the peer closed).
+  std::string receive_some(std::chrono::milliseconds timeout = std::chrono::milliseconds(3000)) {
+    char buf[65536];
+    pollfd p{fd_, POLLIN, 0};
+    if (::poll(&p, 1, static_cast<int>(timeout.count())) <= 0) return {};
+    const ssize_t n = ::recv(fd_, buf, sizeof buf, 0);
+    if (n <= 0) {
+      closed_ = true;
+      return {};
+    }
+    return std::string(buf, static_cast<std::size_t>(n));
+  }
+  /// True once receive() or receive_some() saw the server close the connection.
   bool closed() const { return closed_; }
 
  private:
