@@ -70,6 +70,7 @@ struct ConnectionGate::State {
   std::condition_variable ready_cv;
   std::deque<ReadyConnection> ready;  ///< complete heads waiting for a worker
   std::atomic<std::size_t> ready_count{0};
+  std::atomic<std::size_t> idle_workers{0};  ///< workers blocked waiting for a connection
   bool workers_stop = false;
 
   std::thread poller;
@@ -262,7 +263,9 @@ struct ConnectionGate::State {
       ReadyConnection c;
       {
         std::unique_lock lock(ready_mutex);
+        idle_workers.fetch_add(1, std::memory_order_relaxed);
         ready_cv.wait(lock, [this] { return workers_stop || !ready.empty(); });
+        idle_workers.fetch_sub(1, std::memory_order_relaxed);
         if (ready.empty()) return;
         c = std::move(ready.front());
         ready.pop_front();
@@ -330,7 +333,9 @@ void ConnectionGate::shutdown() {
   ::close(s.wake_fd);
 }
 
-bool ConnectionGate::requests_waiting() const { return state_->ready_count.load(std::memory_order_relaxed) > 0; }
+bool ConnectionGate::requests_waiting() const {
+  return state_->ready_count.load(std::memory_order_relaxed) > state_->idle_workers.load(std::memory_order_relaxed);
+}
 
 std::size_t ConnectionGate::held() const { return state_->held_count.load(std::memory_order_relaxed); }
 

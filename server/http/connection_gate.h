@@ -68,7 +68,8 @@ class ConnectionGate {
   /// Closes every held connection, lets the workers finish the requests already handed to them, and
   /// joins all threads. admit() after shutdown() closes the socket at once.
   void shutdown();
-  /// True while complete heads wait for a worker: a worker should then not linger on its connection.
+  /// True while more complete heads wait than idle workers can take: a worker should then not linger
+  /// on its connection.
   bool requests_waiting() const;
   /// Connections held by the gate now (waiting for a head, idle or draining), not those being served.
   std::size_t held() const;

@@ -59,6 +59,8 @@ thread_local ConnectionState* t_connection = nullptr;
 // and serving it here saves two thread hand-offs. Checked in slices, so waiting requests cut it short.
 constexpr std::chrono::microseconds kKeepAliveGrace{2000};
 constexpr std::chrono::microseconds kGraceSlice{200};
+// Response bytes collected before a send (see LimitedStream::write).
+constexpr std::size_t kWriteBufferBytes = 64 * 1024;
 
 int remaining_ms(Clock::time_point deadline) {
   const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
@@ -125,7 +127,11 @@ class LimitedStream final : public httplib::Stream {
     return receive() > 0;
   }
 
-  bool is_readable() const override { return has_buffered() || wait_for(sock_, POLLIN, remaining_ms(deadline_)) > 0; }
+  bool is_readable() const override {
+    if (has_buffered()) return true;
+    if (!out_.empty() && !flush()) return false;
+    return wait_for(sock_, POLLIN, remaining_ms(deadline_)) > 0;
+  }
   bool is_writable() const override {
     return wait_for(sock_, POLLOUT, static_cast<int>(options_.write_timeout.count())) > 0;
   }
@@ -133,6 +139,7 @@ class LimitedStream final : public httplib::Stream {
   // Reads try the socket first and wait only when it has nothing: one system call per read, not two.
   ssize_t read(char* ptr, size_t size) override {
     if (!has_buffered()) {
+      if (!out_.empty() && !flush()) return -1;
       ssize_t n = receive();
       if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
         if (wait_for(sock_, POLLIN, remaining_ms(deadline_)) <= 0) return -1;
@@ -153,13 +160,30 @@ class LimitedStream final : public httplib::Stream {
     return static_cast<ssize_t>(n);
   }
 
+  // The library writes a response's head and body separately; collecting them and sending once after
+  // the request (flush()) saves a system call and a TCP segment per response. Large bodies go out as
+  // the buffer fills, and anything pending goes out before the stream waits to read (100-continue).
   ssize_t write(const char* ptr, size_t size) override {
-    ssize_t n = ::send(sock_, ptr, size, MSG_NOSIGNAL | MSG_DONTWAIT);
-    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-      if (wait_for(sock_, POLLOUT, static_cast<int>(options_.write_timeout.count())) <= 0) return -1;
-      n = ::send(sock_, ptr, size, MSG_NOSIGNAL | MSG_DONTWAIT);
+    out_.append(ptr, size);
+    if (out_.size() >= kWriteBufferBytes && !flush()) return -1;
+    return static_cast<ssize_t>(size);
+  }
+
+  bool flush() const {
+    std::size_t sent = 0;
+    while (sent < out_.size()) {
+      ssize_t n = ::send(sock_, out_.data() + sent, out_.size() - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
+      if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+        if (wait_for(sock_, POLLOUT, static_cast<int>(options_.write_timeout.count())) <= 0) break;
+        continue;
+      }
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      sent += static_cast<std::size_t>(n);
     }
-    return n;
+    const bool all = sent == out_.size();
+    out_.clear();
+    return all;
   }
 
   // The library asks for both addresses on every request; they do not change, so ask the kernel once.
@@ -194,6 +218,7 @@ class LimitedStream final : public httplib::Stream {
   Clock::time_point deadline_ = Clock::now();
   std::string buffer_;
   std::size_t begin_ = 0;
+  mutable std::string out_;  ///< response bytes not sent yet (mutable: the library's is_readable() is const)
   mutable std::string remote_ip_, local_ip_;
   mutable int remote_port_ = -1, local_port_ = -1;
 };
@@ -318,7 +343,8 @@ class LibraryServer final : public httplib::Server {
       stream.start_request(c.request_start);
       bool closed = false;
       const bool last = c.served + 1 >= options_.keep_alive_max_requests;
-      const bool ok = process_request(stream, last, closed, nullptr);
+      const bool answered = process_request(stream, last, closed, nullptr);
+      const bool ok = stream.flush() && answered;
       ++c.served;
       if (state.close_after || state.head_overflow) {
         after = AfterServe::drain_and_close;
