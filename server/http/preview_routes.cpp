@@ -6,7 +6,6 @@
 #include <mutex>
 
 #include "codec/json_reader.h"
-#include "codec/preset_loader.h"
 #include "codec/preview_service.h"
 #include "codec/problem.h"
 
@@ -66,8 +65,9 @@ std::vector<Route> preview_routes() {
   auto previews = std::make_shared<LazyPreviews>();
   return {
       {"POST", "/api/v1/preview",
-       [previews](const HttpRequest& request, Service&) {
-         return json_response(previews->get().start(codec::parse_json(request.body), codec::resolve_presets_dir(), kPrefix));
+       [previews](const HttpRequest& request, Service& service) {
+         return json_response(
+             previews->get().start(codec::parse_json(request.body), service.config().presets_dir, kPrefix));
        }},
       {"GET", "/api/v1/preview/{id}",
        [previews](const HttpRequest& request, Service&) {

@@ -18,6 +18,13 @@ json post_preview(httplib::Client& c, const json& body, int& status) {
   return r ? json::parse(r->body) : json();
 }
 
+// The repository's presets as `softtune serve --presets DIR` gives them (not through $SOFTTUNE_PRESETS).
+softtune::http::ServiceConfig presets_config() {
+  softtune::http::ServiceConfig config = softtune::http::testing::web_config();
+  config.presets_dir = SOFTTUNE_SOURCE_DIR "/presets";
+  return config;
+}
+
 // PNG files start with these eight bytes.
 bool is_png(const std::string& bytes) { return bytes.rfind("\x89PNG\r\n\x1a\n", 0) == 0; }
 
@@ -70,8 +77,8 @@ TEST(PreviewRoutes, OscillatorFramesAreServedWithCachingHeaders) {
 }
 
 TEST(PreviewRoutes, SceneFramesRunTheBox2DScene) {
-  setenv("SOFTTUNE_PRESETS", SOFTTUNE_SOURCE_DIR "/presets", 1);
-  TestServer server;
+  unsetenv("SOFTTUNE_PRESETS");  // the presets come from the server's configuration alone
+  TestServer server(softtune::http::testing::quick_options(), presets_config());
   auto c = server.client();
   int status = 0;
   const json answer = post_preview(c, {{"preset", "buddhas"}, {"frames", 3}, {"size", "64x36"}}, status);
@@ -82,8 +89,7 @@ TEST(PreviewRoutes, SceneFramesRunTheBox2DScene) {
 }
 
 TEST(PreviewRoutes, BadInputNamesTheField) {
-  setenv("SOFTTUNE_PRESETS", SOFTTUNE_SOURCE_DIR "/presets", 1);
-  TestServer server;
+  TestServer server(softtune::http::testing::quick_options(), presets_config());
   auto c = server.client();
   int status = 0;
   EXPECT_EQ(post_preview(c, {{"preset", "buddhas"}, {"frames", 601}}, status)["field"], "frames");

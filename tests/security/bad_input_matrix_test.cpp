@@ -1,24 +1,17 @@
 // The bad-input matrix: generated hostile variants of a valid request for every field of every JSON
 // route (tune, simulate, accuracy, stability, preview, presets). Each case must end as a 4xx Problem
 // naming the field (or, where a value is legal, a 2xx answer), never as a 5xx, an escaped exception or a
-// non-finite number. tune and preview go over HTTP to an in-process server (content type, empty and
-// non-UTF-8 bodies included); simulate, accuracy, stability and presets go through the codec functions
-// their routes call (the same JSON in, the same Problem out).
+// non-finite number. Every case goes over HTTP to an in-process server, as a client would send it
+// (content type, empty and non-UTF-8 bodies included; a preset name percent-encoded into the path).
 #include <gtest/gtest.h>
 
-#include <functional>
+#include <cctype>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "bad_input_cases.h"
-#include "codec/accuracy_codec.h"
-#include "codec/json_reader.h"
-#include "codec/preview_service.h"
-#include "codec/problem.h"
-#include "codec/scene_codec.h"
-#include "codec/stability_codec.h"
-#include "codec/tune_codec.h"
 #include "harnesses.h"
 // After Eigen (through the codec headers): cpp-httplib brings <resolv.h>, whose `_res` macro breaks
 // Eigen's parameters of that name.
@@ -38,18 +31,6 @@ struct Outcome {
   std::string field;  ///< the Problem's field ("" for success)
   json body;          ///< the answer (success) or the problem document
 };
-
-/// A codec contract as a route runs it: parse the body strictly, run, turn a Problem into its status.
-/// Any other exception is what a route would turn into a 500.
-Outcome through_codec(const std::function<json(const json&)>& contract, const std::string& body) {
-  try {
-    return {200, "", contract(codec::parse_json(body))};
-  } catch (const codec::Problem& p) {
-    return {p.status, p.field, codec::problem_json(p)};
-  } catch (const std::exception& e) {
-    return {500, "", json{{"exception", e.what()}}};
-  }
-}
 
 /// The Problem's field and the mutated path name the same place: equal, or one holds the other (a
 /// missing nested object is reported at its parent; a wrong array at its element). A scene's schema
@@ -87,24 +68,32 @@ void check(const Case& c, const Outcome& o) {
 
 class BadInputMatrix : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { server_ = new http::testing::TestServer(); }
+  static void SetUpTestSuite() {
+    http::ServiceConfig config = http::testing::web_config();
+    config.presets_dir = kPresets;
+    server_ = new http::testing::TestServer(http::testing::quick_options(), config);
+  }
   static void TearDownTestSuite() {
     delete server_;
     server_ = nullptr;
   }
 
-  /// POSTs over HTTP; a 2xx tune answer must also conform to the OpenAPI document.
+  /// POSTs over HTTP (GET for a preset name); a 2xx answer must also conform to the OpenAPI document.
   static Outcome over_http(const std::string& path, const Case& c) {
     auto client = server_->client();
-    auto res = client.Post(path.c_str(), c.body, c.content_type.c_str());
+    client.set_read_timeout(60, 0);
+    const bool get = c.route == "presets";
+    auto res = get ? client.Get(path.c_str()) : client.Post(path.c_str(), c.body, c.content_type.c_str());
     if (!res) return {599, "", json{{"error", "no answer"}}};
     Outcome o{res->status, "", json()};
     o.body = json::parse(res->body, nullptr, false);
     if (res->status >= 400) {
       EXPECT_EQ(res->get_header_value("Content-Type").rfind("application/problem+json", 0), 0u) << c.name;
       if (o.body.is_object() && o.body.contains("field")) o.field = o.body["field"].get<std::string>();
-    } else if (path == "/api/v1/tune") {
-      EXPECT_EQ(http::testing::conformance_error(path, "post", res->status, "application/json", o.body), "") << c.name;
+    } else {
+      const std::string documented = get ? "/api/v1/presets/{name}" : path;
+      EXPECT_EQ(http::testing::conformance_error(documented, get ? "get" : "post", res->status, "application/json", o.body), "")
+          << c.name;
     }
     return o;
   }
@@ -114,42 +103,27 @@ class BadInputMatrix : public ::testing::Test {
 
 http::testing::TestServer* BadInputMatrix::server_ = nullptr;
 
-// Plans only: the frames of a legal variant are not rendered (the render pool has its own tests).
-json plan(const json& doc) {
-  const codec::PreviewPlan p = codec::plan_preview(doc, kPresets);
-  return json{{"canonical", p.canonical}, {"warnings", p.warnings}};
+// A preset name as a client puts it into the path: every byte outside [A-Za-z0-9._~-] percent-encoded.
+std::string preset_path(const std::string& name) {
+  std::string out = "/api/v1/presets/";
+  for (const char ch : name) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (std::isalnum(u) || ch == '.' || ch == '_' || ch == '~' || ch == '-') {
+      out += ch;
+    } else {
+      char buf[4];
+      std::snprintf(buf, sizeof buf, "%%%02X", u);
+      out += buf;
+    }
+  }
+  return out;
 }
 
 TEST_F(BadInputMatrix, EveryCaseEndsAs4xxNamingTheFieldOrAFiniteAnswer) {
   const std::vector<Case> cases = all_cases(kPresets);
   std::size_t ran = 0;
   for (const Case& c : cases) {
-    Outcome o;
-    if (c.route == "tune") {
-      o = over_http("/api/v1/tune", c);
-    } else if (c.route == "preview") {
-      o = c.content_type == "application/json" ? through_codec(plan, c.body) : over_http("/api/v1/preview", c);
-    } else if (c.route == "simulate") {
-      o = through_codec([](const json& d) { return codec::run_simulate(d, kPresets); }, c.body);
-    } else if (c.route == "accuracy") {
-      o = through_codec([](const json& d) { return codec::run_accuracy(d); }, c.body);
-    } else if (c.route == "stability") {
-      // Decoding is the whole of the validation; a legal variant runs with the case list left out.
-      o = through_codec([](const json& d) {
-        codec::StabilityRequest q = codec::decode_stability_request(d);
-        q.run_chain = false;
-        return codec::run_stability(q);
-      }, c.body);
-    } else if (c.route == "presets") {
-      try {
-        o = {200, "", codec::preset_document(kPresets, c.body)};
-      } catch (const codec::Problem& p) {
-        o = {p.status, p.field, codec::problem_json(p)};
-      }
-    } else {
-      ADD_FAILURE() << "unknown route " << c.route;
-      continue;
-    }
+    const Outcome o = over_http(c.route == "presets" ? preset_path(c.body) : "/api/v1/" + c.route, c);
     check(c, o);
     ++ran;
   }
