@@ -1,6 +1,10 @@
 #include "codec/json_schema.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <regex>
+#include <string_view>
 
 namespace softtune::codec {
 namespace {
@@ -102,6 +106,10 @@ class Validator {
         return SchemaError{at, "must have at least " + it->dump() + " characters"};
       if (auto it = s.find("maxLength"); it != s.end() && n > it->get<std::size_t>())
         return SchemaError{at, "must have at most " + it->dump() + " characters"};
+      // JSON Schema patterns are ECMA-262 regular expressions, unanchored: std::regex's default grammar.
+      if (auto it = s.find("pattern"); it != s.end() &&
+                                        !std::regex_search(v.get_ref<const std::string&>(), std::regex(it->get<std::string>())))
+        return SchemaError{at, "must match the pattern " + it->dump()};
     }
     return std::nullopt;
   }
@@ -147,35 +155,105 @@ class Validator {
       }
     }
     if (auto it = s.find("anyOf"); it != s.end()) {
-      std::optional<SchemaError> first;
       for (const auto& sub : *it) {
-        auto e = check(v, sub, at, depth + 1);
-        if (!e) return std::nullopt;
-        if (!first) first = e;
+        if (!check(v, sub, at, depth + 1)) return std::nullopt;
       }
-      return SchemaError{at, "must match one of the allowed forms (first mismatch: " + first->pointer + " " + first->rule + ")"};
+      return closest_mismatch(v, *it, at, depth);
     }
     if (auto it = s.find("oneOf"); it != s.end()) {
       int matches = 0;
-      std::optional<SchemaError> first;
-      for (const auto& sub : *it) {
-        auto e = check(v, sub, at, depth + 1);
-        if (!e) ++matches;
-        else if (!first) first = e;
-      }
+      for (const auto& sub : *it) matches += check(v, sub, at, depth + 1) ? 0 : 1;
       if (matches == 1) return std::nullopt;
-      if (matches == 0)
-        return SchemaError{at, "must match exactly one allowed form; none matched (first mismatch: " +
-                                   first->pointer + " " + first->rule + ")"};
+      if (matches == 0) return closest_mismatch(v, *it, at, depth);
       return SchemaError{at, "must match exactly one allowed form; " + std::to_string(matches) + " matched"};
     }
     return std::nullopt;
   }
 
+  // Why `v` matches none of `forms`, said about the form the author meant. When every form fixes a
+  // "type" member to a constant (box, circle, polygon), that member picks the form, and an unknown one
+  // is the error; otherwise the form that got furthest (the deepest mismatch) is the one reported.
+  std::optional<SchemaError> closest_mismatch(const json& v, const json& forms, const std::string& at, int depth) const {
+    if (v.is_object() && v.contains("type") && v["type"].is_string()) {
+      std::string names;
+      const json* chosen = nullptr;
+      for (const auto& form : forms) {
+        const json* tag = form.is_object() ? tag_of(form) : nullptr;
+        if (!tag) {
+          names.clear();
+          break;
+        }
+        names += (names.empty() ? "" : ", ") + tag->dump();
+        if (*tag == v["type"]) chosen = &form;
+      }
+      if (!names.empty()) {
+        if (!chosen) return SchemaError{at + "/type", "must be one of " + names};
+        return check(v, *chosen, at, depth + 1);
+      }
+    }
+    std::optional<SchemaError> deepest;
+    for (const auto& form : forms) {
+      auto e = check(v, form, at, depth + 1);
+      if (e && (!deepest || e->pointer.size() > deepest->pointer.size())) deepest = e;
+    }
+    if (!deepest) return SchemaError{at, "matches none of the allowed forms"};
+    return SchemaError{deepest->pointer, "matches none of the allowed forms; closest: " + deepest->rule};
+  }
+
+  static const json* tag_of(const json& form) {
+    const auto props = form.find("properties");
+    if (props == form.end() || !props->is_object()) return nullptr;
+    const auto type = props->find("type");
+    if (type == props->end() || !type->is_object()) return nullptr;
+    const auto tag = type->find("const");
+    return tag == type->end() ? nullptr : &*tag;
+  }
+
   const json& root_;
 };
 
+// Keywords the validator checks, and those that only annotate (JSON Schema 2020-12, OpenAPI 3.1).
+constexpr std::array<std::string_view, 22> kChecked = {
+    "type", "enum", "const", "properties", "required", "additionalProperties", "items", "minItems", "maxItems",
+    "minimum", "maximum", "exclusiveMinimum", "exclusiveMaximum", "minLength", "maxLength", "pattern", "$ref", "oneOf",
+    "anyOf", "allOf", "$defs", "$schema"};
+constexpr std::array<std::string_view, 11> kAnnotations = {
+    "description", "title", "examples", "example", "default", "$comment", "format", "$id", "deprecated",
+    "readOnly", "writeOnly"};
+
+void collect_unsupported(const json& s, const std::string& at, std::vector<std::string>& out) {
+  if (!s.is_object()) return;
+  for (auto it = s.begin(); it != s.end(); ++it) {
+    const std::string& key = it.key();
+    const bool known = std::find(kChecked.begin(), kChecked.end(), key) != kChecked.end() ||
+                       std::find(kAnnotations.begin(), kAnnotations.end(), key) != kAnnotations.end() ||
+                       key.rfind("x-", 0) == 0;
+    if (!known) out.push_back(at + "/" + escape_pointer(key));
+  }
+  for (const char* map : {"properties", "$defs"}) {
+    if (auto it = s.find(map); it != s.end() && it->is_object()) {
+      for (auto sub = it->begin(); sub != it->end(); ++sub) {
+        collect_unsupported(sub.value(), at + "/" + map + "/" + escape_pointer(sub.key()), out);
+      }
+    }
+  }
+  for (const char* one : {"items", "additionalProperties"}) {
+    if (auto it = s.find(one); it != s.end()) collect_unsupported(*it, at + "/" + one, out);
+  }
+  for (const char* list : {"oneOf", "anyOf", "allOf"}) {
+    if (auto it = s.find(list); it != s.end() && it->is_array()) {
+      for (std::size_t i = 0; i < it->size(); ++i) collect_unsupported((*it)[i], at + "/" + list + "/" + std::to_string(i), out);
+    }
+  }
+}
+
 }  // namespace
+
+std::vector<std::string> unsupported_keywords(const json& schema) {
+  std::vector<std::string> out;
+  collect_unsupported(schema, "", out);
+  return out;
+}
 
 std::optional<SchemaError> validate_json_schema(const json& instance, const json& schema) {
   return validate_json_schema(instance, schema, schema);
