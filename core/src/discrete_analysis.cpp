@@ -65,7 +65,8 @@ bool achieved_from_poles(std::complex<double> z1, std::complex<double> z2, doubl
   const double omega = modulus(s);
   if (!(omega > 0.0) || !std::isfinite(omega)) return false;
   frequency_hz = omega / (2.0 * std::numbers::pi);
-  damping_ratio = -s.real() / omega;
+  // An undamped pole has s.real() == +0, and -(+0) is -0: reports would print "-0".
+  damping_ratio = s.real() == 0.0 ? 0.0 : -s.real() / omega;
   return true;
 }
 

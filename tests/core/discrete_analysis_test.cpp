@@ -99,6 +99,13 @@ TEST(DiscreteAnalysis, AchievedFrequencyFromKnownPoles) {
   EXPECT_NEAR(z, -(s1 + s2) / (2 * std::sqrt(s1 * s2)), 1e-10);
   // A zero pole has no frequency.
   EXPECT_FALSE(achieved_from_poles(0.0, 0.5, h, f, z));
+  // Poles on the unit circle (semi-implicit Euler, exact softness at zeta 0): undamped, +0 and not -0,
+  // which reports and CSV files would print as "-0".
+  const std::complex<double> on_circle = std::polar(1.0, omega * h);
+  ASSERT_TRUE(achieved_from_poles(on_circle, std::conj(on_circle), h, f, z));
+  EXPECT_EQ(z, 0.0);
+  EXPECT_FALSE(std::signbit(z));
+  EXPECT_NEAR(f, omega / (2 * kPi), 1e-12);
 }
 
 TEST(DiscreteAnalysis, ImplicitEulerSlowsAndDampsAsTheSpecSays) {
