@@ -2,9 +2,11 @@
 
 #include <sys/epoll.h>
 #include <sys/eventfd.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
@@ -27,6 +29,26 @@ constexpr std::chrono::milliseconds kSweepInterval{50};
 // destroy the answer before the client reads it. Discard what arrives for this long, at most this much.
 constexpr std::chrono::milliseconds kDrainTime{500};
 constexpr std::size_t kDrainBytes = 2u << 20;
+
+// Descriptors kept free beyond the held connections: those being served or queued, the listening
+// socket, epoll and eventfd, standard streams, Mesa's files when previews render.
+constexpr std::size_t kDescriptorReserve = 128;
+
+// Each held connection is a file descriptor. When the process may open fewer than it needs, raise the
+// soft limit toward the hard one (Debian's shells start at 1024 soft); hold fewer connections if that
+// is still short, so that accept() keeps working and eviction can make room.
+std::size_t fit_to_descriptor_limit(std::size_t max_open, std::size_t reserve) {
+  rlimit r{};
+  if (::getrlimit(RLIMIT_NOFILE, &r) != 0) return max_open;
+  const rlim_t wanted = static_cast<rlim_t>(max_open + reserve);
+  if (r.rlim_cur != RLIM_INFINITY && r.rlim_cur < wanted) {
+    rlimit raised = r;
+    raised.rlim_cur = r.rlim_max == RLIM_INFINITY ? wanted : std::min<rlim_t>(wanted, r.rlim_max);
+    if (::setrlimit(RLIMIT_NOFILE, &raised) == 0) r = raised;
+  }
+  if (r.rlim_cur == RLIM_INFINITY || r.rlim_cur >= wanted) return max_open;
+  return r.rlim_cur > reserve + 16 ? static_cast<std::size_t>(r.rlim_cur) - reserve : 16;
+}
 
 struct Held {
   std::string received;
@@ -297,6 +319,8 @@ struct ConnectionGate::State {
 ConnectionGate::ConnectionGate(GateOptions options, Serve serve, Refuse refuse) : state_(std::make_unique<State>()) {
   State& s = *state_;
   s.options = options;
+  s.options.max_open = fit_to_descriptor_limit(
+      options.max_open, kDescriptorReserve + static_cast<std::size_t>(options.threads) + options.max_ready);
   s.serve = std::move(serve);
   s.refuse = std::move(refuse);
   s.epoll_fd = ::epoll_create1(EPOLL_CLOEXEC);
@@ -336,6 +360,8 @@ void ConnectionGate::shutdown() {
 bool ConnectionGate::requests_waiting() const {
   return state_->ready_count.load(std::memory_order_relaxed) > state_->idle_workers.load(std::memory_order_relaxed);
 }
+
+std::size_t ConnectionGate::capacity() const { return state_->options.max_open; }
 
 std::size_t ConnectionGate::held() const { return state_->held_count.load(std::memory_order_relaxed); }
 

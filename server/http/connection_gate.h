@@ -19,7 +19,9 @@ bool head_complete(std::string_view received);
 
 struct GateOptions {
   int threads = 8;                ///< workers serving connections whose head is complete
-  std::size_t max_open = 1024;    ///< connections held at once (waiting for a head, idle or draining)
+  /// Connections held at once (waiting for a head, idle or draining). The gate raises the process's
+  /// soft descriptor limit to fit them if it can, and holds fewer if it cannot (capacity()).
+  std::size_t max_open = 1024;
   std::size_t max_ready = 64;     ///< complete heads waiting for a free worker; more get 503
   std::size_t max_head_bytes = 16 * 1024;  ///< a head still incomplete at this size goes to a worker (which answers 431)
   /// From a request's first byte until its head is complete; the worker gets what is left for the body.
@@ -71,6 +73,8 @@ class ConnectionGate {
   /// True while more complete heads wait than idle workers can take: a worker should then not linger
   /// on its connection.
   bool requests_waiting() const;
+  /// How many connections the gate holds at most: max_open, or fewer when descriptors are short.
+  std::size_t capacity() const;
   /// Connections held by the gate now (waiting for a head, idle or draining), not those being served.
   std::size_t held() const;
 
