@@ -177,7 +177,11 @@ TEST(CapabilityRoutes, AccuracyCsvSvgAndErrors) {
 
 TEST(CapabilityRoutes, StabilityDefaultSweepIsKeptAndPasses) {
   TestServer s;
-  auto first = s.client().Get("/api/v1/stability");
+  // The first answer runs the whole default sweep, which takes about 17 s under ASan+UBSan (the test
+  // command's sanitizer stage): this client waits for it instead of the default 5 s.
+  httplib::Client sweeping = s.client();
+  sweeping.set_read_timeout(120, 0);
+  auto first = sweeping.Get("/api/v1/stability");
   ASSERT_TRUE(first);
   ASSERT_EQ(first->status, 200);
   EXPECT_EQ(media_type(first), kJson);
