@@ -14,7 +14,7 @@ for name in "${names[@]}"; do
   corpus=fuzz/corpus/$name
   work=$(mktemp -d)
   echo "fuzz-long: $name"
-  build-fuzz/${name}_fuzz -runs="$runs" -max_total_time="$max_seconds" -timeout=30 -rss_limit_mb=2048 \
+  build-asan/${name}_fuzz -runs="$runs" -max_total_time="$max_seconds" -timeout=30 -rss_limit_mb=2048 \
     -max_len=16384 -print_final_stats=1 -artifact_prefix="fuzz/artifacts/$name-" "$work" "$corpus" \
     2>"fuzz/artifacts/$name.log" || echo "fuzz-long: $name FOUND A CRASH (fuzz/artifacts/$name.log)"
   grep -E "stat::number_of_executed_units|stat::average_exec_per_sec|stat::peak_rss_mb" "fuzz/artifacts/$name.log"

@@ -1,23 +1,52 @@
 #!/usr/bin/env bash
-# Each libFuzzer harness for a short bounded time (default 40 s, SOFTTUNE_FUZZ_SECONDS overrides) from
-# the committed corpus in fuzz/corpus/<name>, after replaying fuzz/regressions/<name>. New inputs go to
-# a scratch directory, so the committed corpus stays as it is. Called by scripts/test.sh.
+# Each libFuzzer harness for a short bounded time (default 60 s, SOFTTUNE_FUZZ_SECONDS overrides) from
+# the committed corpus in fuzz/corpus/<name>, after replaying fuzz/regressions/<name>; two harnesses at a
+# time, one per core (each libFuzzer process is single-threaded). New inputs go to a scratch directory,
+# so the committed corpus stays as it is. Called by scripts/test.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${SOFTTUNE_FUZZ_SECONDS:-40}
+seconds=${SOFTTUNE_FUZZ_SECONDS:-60}
+parallel=${SOFTTUNE_JOBS:-2}
+names=(tune_request request_decode simulate_request accuracy_request preset_load)
 scripts/build-fuzz.sh
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-for name in tune_request request_decode simulate_request accuracy_request preset_load; do
-  corpus=fuzz/corpus/$name
-  mkdir -p "$scratch/$name"
+
+# Every crash found before and fixed must stay fixed: replay them all before fuzzing anything.
+for name in "${names[@]}"; do
   if compgen -G "fuzz/regressions/$name/*" >/dev/null; then
-    build-fuzz/${name}_fuzz -runs=0 fuzz/regressions/$name/* 2>"$scratch/$name.replay.log" ||
+    build-asan/${name}_fuzz -runs=0 fuzz/regressions/$name/* 2>"$scratch/$name.replay.log" ||
       { cat "$scratch/$name.replay.log"; exit 1; }
   fi
-  echo "fuzz: $name for ${seconds} s"
-  build-fuzz/${name}_fuzz -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -max_len=16384 \
-    -artifact_prefix="$scratch/$name-" "$scratch/$name" "$corpus" 2>"$scratch/$name.log" ||
-    { tail -n 60 "$scratch/$name.log"; exit 1; }
-  grep -E "^(Done|#[0-9]+ +DONE)" "$scratch/$name.log" | tail -n1
 done
+
+# One harness: fuzz it, then print its last status line (or the report when it found something).
+fuzz_one() {
+  local name=$1
+  mkdir -p "$scratch/$name"
+  if build-asan/${name}_fuzz -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -max_len=16384 \
+    -artifact_prefix="$scratch/$name-" "$scratch/$name" "fuzz/corpus/$name" 2>"$scratch/$name.log"; then
+    echo "fuzz: $name: $(grep -E "^(Done|#[0-9]+ +DONE)" "$scratch/$name.log" | tail -n1)"
+  else
+    echo "fuzz: $name FAILED"
+    tail -n 60 "$scratch/$name.log"
+    return 1
+  fi
+}
+
+echo "fuzz: ${#names[@]} harnesses for ${seconds} s each, ${parallel} at a time"
+failed=0
+running=0
+for name in "${names[@]}"; do
+  if ((running >= parallel)); then
+    wait -n || failed=1
+    running=$((running - 1))
+  fi
+  fuzz_one "$name" &
+  running=$((running + 1))
+done
+while ((running > 0)); do
+  wait -n || failed=1
+  running=$((running - 1))
+done
+exit "$failed"

@@ -1,11 +1,46 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs every test (ctest), then the attack suite against a real `softtune serve`.
-# This is the README's test command and what CI runs. The sanitizer builds (scripts/test-sanitizers.sh) and
-# the short fuzz runs (scripts/test-fuzz-short.sh) are separate commands until they have run end to end
-# within CI's budget (README, "Limits and security").
+# The README's test command and what CI runs. Stages, in order (fastest failure feedback first):
+#   setup        scripts/setup.sh (Debian packages and npm ci; only checks when all is installed)
+#   build        scripts/build.sh: the plain Release build in build/
+#   ctest        every test in build/ (GoogleTest, CLI, the page in Node and headless Chromium)
+#   attacks      scripts/test-attacks.sh: the attack suite against a real `softtune serve`
+#   asan-build   scripts/build-asan.sh: clang ASan+UBSan build of the suite and the fuzz harnesses, build-asan/
+#   asan-ctest   every test in build-asan/ under ASan+UBSan (LSan on)
+#   fuzz         scripts/test-fuzz-short.sh: regressions replayed, then each harness 60 s, two at a time
+#   tsan         the server and render-pool tests built and run under TSan, build-tsan/
+# Any sanitizer report fails its stage. At the end (also after a failure) it prints each stage's wall
+# time and the load average when the stage ended.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
-scripts/build.sh
-(cd build && ctest --output-on-failure -j"$(nproc)" --timeout 900)
-scripts/test-attacks.sh
+
+summary=()
+current=""
+report() {
+  local rc=$?
+  ((${#summary[@]})) && printf 'test.sh: %s\n' "${summary[@]}"
+  if ((rc)); then echo "test.sh: FAILED in stage $current (exit $rc)"; else echo "test.sh: all stages passed"; fi
+}
+trap report EXIT
+
+# stage NAME COMMAND...: runs the command, records its wall time and the load average after it.
+stage() {
+  current=$1
+  shift
+  echo "test.sh: == $current"
+  local started=$SECONDS
+  "$@"
+  summary+=("$(printf '%-10s %5d s   load %s' "$current" $((SECONDS - started)) "$(cut -d' ' -f1-3 /proc/loadavg)")")
+}
+
+plain_ctest() { (cd build && ctest --output-on-failure -j"$(nproc)" --timeout 900); }
+
+started=$SECONDS
+stage setup scripts/setup.sh
+stage build scripts/build.sh
+stage ctest plain_ctest
+stage attacks scripts/test-attacks.sh
+stage asan-build scripts/build-asan.sh
+stage asan-ctest scripts/test-sanitizers.sh asan
+stage fuzz scripts/test-fuzz-short.sh
+stage tsan scripts/test-sanitizers.sh tsan
+summary+=("$(printf '%-10s %5d s' total $((SECONDS - started)))")
