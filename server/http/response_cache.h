@@ -1,7 +1,8 @@
 #pragma once
 // A bounded LRU cache of response bodies for deterministic JSON contracts (tune gives the same bytes
 // for the same request), keyed by the contract and the canonical request (routes.cpp: sorted keys, numbers
-// as doubles), so {"a":1,"b":2} and { "b": 2, "a": 1.0 } share an entry. Thread-safe.
+// as doubles), so {"a":1,"b":2} and { "b": 2, "a": 1.0 } share an entry; routes.cpp also stores each
+// spelling's raw bytes as a key to the same body, so a repeat is found without parsing. Thread-safe.
 
 #include <cstddef>
 #include <list>

@@ -72,3 +72,31 @@ TEST(ResponseCache, TuneAnswersEqualRequestsFromTheCacheAndOthersFresh) {
   EXPECT_EQ(post(R"({"response_frames": 12, "oscillation": "free"})").status, 422);
   EXPECT_EQ(post(R"({"response_frames": 12, "oscillation": "free"})").status, 422);
 }
+
+// A repeat of the same bytes is found by its bytes, without parsing (routes.cpp): each distinct spelling
+// adds one entry next to the canonical one, and bodies that differ in one byte are never mixed up.
+TEST(ResponseCache, RepeatedBytesAreFoundWithoutParsingAndNeverMixedUp) {
+  softtune::http::Service service({}, softtune::http::service_routes());
+  auto post = [&](std::string body) {
+    softtune::http::HttpRequest r;
+    r.method = "POST";
+    r.path = "/api/v1/tune";
+    r.body = std::move(body);
+    return service.handle(r);
+  };
+  const std::string request = R"({"response_frames": 12, "oscillation": "free", "effective_mass": 2})";
+  const auto first = post(request);
+  ASSERT_EQ(first.status, 200);
+  EXPECT_EQ(service.response_cache().entries(), 2u);  // the canonical request and these bytes
+  EXPECT_EQ(post(request).body, first.body);
+  EXPECT_EQ(service.response_cache().entries(), 2u);
+  EXPECT_EQ(post(request + " ").body, first.body);  // another spelling: a canonical hit, one more entry
+  EXPECT_EQ(service.response_cache().entries(), 3u);
+  std::string ten_frames = request;
+  ten_frames.replace(ten_frames.find("12"), 2, "10");  // one byte apart: 6 Hz, not 5
+  EXPECT_NEAR(nlohmann::json::parse(post(ten_frames).body)["frequency_hz"].get<double>(), 6.0, 1e-12);
+  EXPECT_NEAR(nlohmann::json::parse(post(request).body)["frequency_hz"].get<double>(), 5.0, 1e-12);
+  const std::string metrics = service.metrics().prometheus_text();
+  EXPECT_NE(metrics.find("softtune_cache_hits_total{cache=\"tune\"} 3\n"), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("softtune_cache_misses_total{cache=\"tune\"} 2\n"), std::string::npos) << metrics;
+}
