@@ -10,6 +10,14 @@ namespace {
 
 std::shared_ptr<const std::string> text(std::string s) { return std::make_shared<const std::string>(std::move(s)); }
 
+softtune::http::HttpResponse post_tune(softtune::http::Service& service, std::string body) {
+  softtune::http::HttpRequest r;
+  r.method = "POST";
+  r.path = "/api/v1/tune";
+  r.body = std::move(body);
+  return service.handle(r);
+}
+
 }  // namespace
 
 TEST(ResponseCache, EvictsTheLeastRecentlyUsedEntry) {
@@ -49,13 +57,7 @@ TEST(ResponseCache, ReplacingAnEntryKeepsTheByteCount) {
 
 TEST(ResponseCache, TuneAnswersEqualRequestsFromTheCacheAndOthersFresh) {
   softtune::http::Service service({}, softtune::http::service_routes());
-  auto post = [&](std::string body) {
-    softtune::http::HttpRequest r;
-    r.method = "POST";
-    r.path = "/api/v1/tune";
-    r.body = std::move(body);
-    return service.handle(r);
-  };
+  auto post = [&](std::string body) { return post_tune(service, std::move(body)); };
   const auto first = post(R"({"response_frames": 12, "oscillation": "free", "effective_mass": 2})");
   // The same request written differently (key order, spacing, 2 vs 2.0) is the same canonical request.
   const auto again = post(R"({ "effective_mass": 2.0, "oscillation": "free", "response_frames": 12 })");
@@ -77,13 +79,7 @@ TEST(ResponseCache, TuneAnswersEqualRequestsFromTheCacheAndOthersFresh) {
 // adds one entry next to the canonical one, and bodies that differ in one byte are never mixed up.
 TEST(ResponseCache, RepeatedBytesAreFoundWithoutParsingAndNeverMixedUp) {
   softtune::http::Service service({}, softtune::http::service_routes());
-  auto post = [&](std::string body) {
-    softtune::http::HttpRequest r;
-    r.method = "POST";
-    r.path = "/api/v1/tune";
-    r.body = std::move(body);
-    return service.handle(r);
-  };
+  auto post = [&](std::string body) { return post_tune(service, std::move(body)); };
   const std::string request = R"({"response_frames": 12, "oscillation": "free", "effective_mass": 2})";
   const auto first = post(request);
   ASSERT_EQ(first.status, 200);
