@@ -16,6 +16,7 @@ packages=(
   chromium                           # browser tests
   wrk                                # bench: HTTP load
   clang-14 libclang-rt-14-dev python3  # security: libFuzzer harnesses, attack suite
+  valgrind                           # tests: uninitialised reads in the Box2D tests (memcheck)
 )
 
 missing=()

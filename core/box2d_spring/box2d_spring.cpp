@@ -16,8 +16,12 @@ std::vector<double> run_box2d_spring(const Oscillator& spring, double x0, double
   body_def.fixedRotation = true;
   body_def.position.Set(kBox2DRestLength + static_cast<float>(x0), 0.0f);
   b2Body* body = world.CreateBody(&body_def);
+  // b2Vec2's default constructor leaves x and y unset, so `b2MassData{}` does not zero the centre: a
+  // garbage centre of mass made every position NaN whenever the stack held garbage (ASan's fake stack).
   b2MassData mass{};
   mass.mass = static_cast<float>(spring.mass);
+  mass.center.SetZero();
+  mass.I = 0.0f;
   body->SetMassData(&mass);
 
   b2DistanceJointDef joint;
