@@ -199,14 +199,25 @@ std::shared_ptr<PreviewJob> FramePipeline::submit(std::string_view canonical_req
 }
 
 void FramePipeline::worker_loop() {
-  // Created on this thread's first frame and kept: a GL context costs 6-20 ms to make.
+  // Made on this thread's first frame and kept while frames keep coming (a raster process and its GL
+  // context take about 60 ms to start); destroyed after release_renderer_after_ms without one.
   std::unique_ptr<Renderer> renderer;
   std::vector<std::uint8_t> pixels;
+  const auto ready = [this] { return stopping_ || !queue_.empty(); };
   for (;;) {
     Task task;
     {
       std::unique_lock lock(queue_mutex_);
-      queue_cv_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
+      if (renderer && options_.release_renderer_after_ms > 0) {
+        if (!queue_cv_.wait_for(lock, std::chrono::milliseconds(options_.release_renderer_after_ms), ready)) {
+          lock.unlock();
+          renderer.reset();
+          std::vector<std::uint8_t>().swap(pixels);
+          continue;
+        }
+      } else {
+        queue_cv_.wait(lock, ready);
+      }
       if (queue_.empty()) return;
       task = std::move(queue_.front());
       queue_.pop_front();

@@ -1,6 +1,9 @@
 // POST /api/v1/preview and its frame routes, against a real in-process server.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "openapi_conformance.h"
@@ -25,6 +28,15 @@ softtune::http::ServiceConfig presets_config() {
   return config;
 }
 
+// Whether a shared object whose file name contains `name` is mapped into this process.
+bool mapped(const std::string& name) {
+  std::ifstream maps("/proc/self/maps");
+  for (std::string line; std::getline(maps, line);) {
+    if (line.find(name) != std::string::npos) return true;
+  }
+  return false;
+}
+
 // PNG files start with these eight bytes.
 bool is_png(const std::string& bytes) { return bytes.rfind("\x89PNG\r\n\x1a\n", 0) == 0; }
 
@@ -39,6 +51,25 @@ TEST(PreviewRoutes, NoContextUntilFramesAreAskedFor) {
                    "application/json")->status, 200);
   EXPECT_EQ(c.Get("/api/v1/preview/abc/0.png")->status, 404);
   EXPECT_EQ(softtune::render::gl_contexts_created(), before);
+}
+
+// Mesa and LLVM (about 50 MB of RSS as soon as they are mapped) never enter the server: the first
+// preview starts raster processes that hold the GL contexts.
+TEST(PreviewRoutes, MesaStaysOutOfTheServerProcess) {
+  const int started = softtune::render::raster_processes_started();
+  TestServer server;
+  auto c = server.client();
+  ASSERT_EQ(c.Post("/api/v1/tune", R"({"response_frames": 12, "oscillation": "some", "effective_mass": 1})",
+                   "application/json")->status, 200);
+  EXPECT_EQ(softtune::render::raster_processes_started(), started);
+  int status = 0;
+  const json answer = post_preview(c, {{"response_frames", 12}, {"oscillation", "some"}, {"effective_mass", 1},
+                                       {"frames", 2}, {"size", "32x18"}}, status);
+  ASSERT_EQ(status, 200) << answer.dump();
+  EXPECT_GT(softtune::render::raster_processes_started(), started);
+  EXPECT_GE(softtune::render::gl_contexts_created(), 1);
+  EXPECT_FALSE(mapped("libOSMesa"));
+  EXPECT_FALSE(mapped("libLLVM"));
 }
 
 TEST(PreviewRoutes, OscillatorFramesAreServedWithCachingHeaders) {

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <thread>
@@ -101,6 +103,37 @@ TEST(FramePipeline, NoGlContextUnlessFramesAreRequested) {
   EXPECT_LE(after_first, before + p.workers());
   EXPECT_TRUE(p.submit("box", small(8), [] { return sliding_box(8); })->from_cache());
   EXPECT_EQ(gl_contexts_created(), after_first);
+}
+
+// An idle worker gives its renderer (with the OSMesa backend: its raster process) back, and the next
+// frame makes a new one.
+TEST(FramePipeline, IdleWorkersReleaseTheirRenderers) {
+  std::atomic<int> made{0}, live{0};
+  struct Counted final : public Renderer {
+    explicit Counted(std::atomic<int>& live) : live_(live) { ++live_; }
+    ~Counted() override { --live_; }
+    void render(const DrawFrame&, const Camera&, ImageSize, std::span<std::uint8_t> rgba) override {
+      std::fill(rgba.begin(), rgba.end(), std::uint8_t{255});
+    }
+    std::atomic<int>& live_;
+  };
+  PipelineOptions o;
+  o.workers = 1;
+  o.release_renderer_after_ms = 50;
+  o.make_renderer = [&] {
+    ++made;
+    return std::make_unique<Counted>(live);
+  };
+  FramePipeline p(o);
+  p.submit("a", small(3), [] { return sliding_box(3); })->wait();
+  EXPECT_EQ(made.load(), 1);
+  for (int i = 0; i < 500 && live.load() > 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(live.load(), 0);
+  p.submit("b", small(3), [] { return sliding_box(3); })->wait();
+  EXPECT_EQ(made.load(), 2);
+  // While frames keep coming, the renderer is kept.
+  p.submit("c", small(3), [] { return sliding_box(3); })->wait();
+  EXPECT_EQ(made.load(), 2);
 }
 
 TEST(FramePipeline, FramesDifferWhileTheSceneMovesAndRepeatExactly) {

@@ -106,6 +106,9 @@ struct PipelineOptions {
   std::size_t cache_bytes = std::size_t{256} << 20;
   PngOptions png;
   RendererOptions renderer;
+  /// ms a worker waits without a frame before it destroys its renderer (and so ends its raster process
+  /// and gives back its memory); the next frame makes a new one (about 60 ms). 0: never.
+  int release_renderer_after_ms = 30'000;
   /// Makes a worker's renderer on its first frame; empty: the OSMesa backend with `renderer`.
   std::function<std::unique_ptr<Renderer>()> make_renderer;
 };

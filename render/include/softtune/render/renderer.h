@@ -1,7 +1,7 @@
 #pragma once
 // The renderer interface: a frame (draw model) + camera + size -> RGBA pixels. Callers never see GL:
-// the OSMesa backend (osmesa_renderer.cpp, the one file that includes GL headers) can be replaced by an
-// EGL surfaceless one (Mesa 25.1 removed OSMesa) without touching them.
+// the OSMesa backend (osmesa_rasterizer.cpp, the one file that includes GL headers, run in a process of
+// its own) can be replaced by an EGL surfaceless one (Mesa 25.1 removed OSMesa) without touching them.
 
 #include <cstdint>
 #include <memory>
@@ -21,8 +21,8 @@ struct RendererOptions {
   int llvmpipe_threads = 0;
 };
 
-/// Not thread-safe: one renderer per worker thread. The GL context is created on the first render()
-/// (6-20 ms) and kept for the renderer's life.
+/// Not thread-safe: one renderer per worker thread. The GL context (in the renderer's raster process,
+/// about 80 MB with Mesa and LLVM) is created on the first render() and kept for the renderer's life.
 class Renderer {
  public:
   virtual ~Renderer() = default;
@@ -31,10 +31,17 @@ class Renderer {
   virtual void render(const DrawFrame& frame, const Camera& camera, ImageSize size, std::span<std::uint8_t> rgba) = 0;
 };
 
-/// The OSMesa (llvmpipe) backend. Creates no context until render() is called.
+/// The OSMesa (llvmpipe) backend. Draws in a raster process of its own (softtune-raster, from the
+/// executable's folder or the build tree), started on the first render(), so the calling process never
+/// loads Mesa or LLVM. A frame that fails there (a GL error, a crash, over 60 s) throws
+/// std::runtime_error and the next frame starts a new process.
 std::unique_ptr<Renderer> make_osmesa_renderer(RendererOptions options = {});
 
-/// GL contexts this process has created so far: a request without frames must leave it unchanged.
+/// GL contexts this process's renderers have had created so far: a request without frames must leave
+/// it unchanged.
 int gl_contexts_created();
+
+/// Raster processes this process has started so far.
+int raster_processes_started();
 
 }  // namespace softtune::render
