@@ -298,6 +298,49 @@ TRAVERSALS = [
 ]
 
 
+def attack_preview_flood(port, previews=16, frames=120):
+    """Expensive requests at once: `previews` different previews asked for with "wait": true. Each
+    waiter would hold one of the server's worker threads; past the waiter cap (2) they are answered at
+    once with a progress URL and a wait_declined warning, so health and tune keep their threads."""
+    answers, lock = [], threading.Lock()
+
+    def one(i):
+        body = {"response_frames": 10 + i, "oscillation": "some", "effective_mass": 1, "frames": frames,
+                "size": "320x180"}
+        c = http.client.HTTPConnection(HOST, port, timeout=120)
+        c.request("POST", "/api/v1/preview", json.dumps(body).encode(), {"Content-Type": "application/json"})
+        r = c.getresponse()
+        data = json.loads(r.read() or b"null")
+        c.close()
+        with lock:
+            answers.append((r.status, data))
+
+    threads = [threading.Thread(target=one, args=(i,)) for i in range(previews)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    done = sum(1 for st, a in answers if st == 200 and a["status"] == "done")
+    declined = [a for st, a in answers if st == 200 and a["status"] == "rendering"
+                and any(w["code"] == "wait_declined" for w in a["warnings"])]
+    # The declined renders go on: follow them to the end, so the probes run while the pool is busy.
+    deadline, finished = time.monotonic() + 90, 0
+    for a in declined:
+        while time.monotonic() < deadline:
+            c = http.client.HTTPConnection(HOST, port, timeout=10)
+            c.request("GET", a["progress_url"])
+            r = c.getresponse()
+            status = json.loads(r.read())["status"]
+            c.close()
+            if status != "rendering":
+                finished += status == "done"
+                break
+            time.sleep(0.1)
+    return {"previews": previews, "frames_each": frames, "waited": done, "declined": len(declined),
+            "declined_then_done": finished, "statuses": sorted({st for st, _ in answers}),
+            "ok": done + len(declined) == previews and finished == len(declined)}
+
+
 def attack_path_traversal(port, rounds=1):
     leaks, statuses = [], set()
     for _ in range(rounds):
@@ -392,6 +435,7 @@ def main():
             ("slowloris", lambda: attack_slowloris(port, args.slowloris_seconds, args.slowloris_connections)),
             # More slow connections than the server holds (1024): it must close the oldest, not the newest.
             ("slowloris_flood", lambda: attack_slowloris(port, args.slowloris_seconds / 2, 3 * args.slowloris_connections)),
+            ("preview_flood", lambda: attack_preview_flood(port)),
         ]
         results, failed = {}, False
         for name, attack in attacks:

@@ -72,9 +72,10 @@ Camera run_camera(const FrameSet& set, ImageSize size) {
   return fit_camera(all, static_cast<double>(size.width) / size.height);
 }
 
+// What the cache really holds: string capacities, not sizes.
 std::size_t Preview::bytes() const {
-  std::size_t n = sizeof(Preview) + id.size() + filmstrip_png.size();
-  for (const std::string& f : frames_png) n += sizeof(std::string) + f.size();
+  std::size_t n = sizeof(Preview) + id.capacity() + filmstrip_png.capacity() + frames_png.capacity() * sizeof(std::string);
+  for (const std::string& f : frames_png) n += f.capacity();
   return n;
 }
 

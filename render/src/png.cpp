@@ -69,6 +69,9 @@ std::string encode_png(std::span<const std::uint8_t> rgba, ImageSize size, PngOp
   const bool ok = info && write(png, info, size, options.level, filter_flags(options.filter), rows.data());
   png_destroy_write_struct(&png, &info);
   if (!ok) throw std::runtime_error("png: " + (error.empty() ? std::string("cannot create an info struct") : error));
+  // The guess above is 2-8 times what a frame compresses to, and cached frames live for long: without
+  // this a preview cache bounded at 256 MiB of PNG bytes held up to 2 GiB of capacity.
+  out.shrink_to_fit();
   return out;
 }
 

@@ -113,7 +113,8 @@ PreviewPlan plan_preview(const json& request, const std::string& presets_dir) {
   return plan;
 }
 
-PreviewService::PreviewService(render::PipelineOptions options) : pipeline_(std::move(options)) {}
+PreviewService::PreviewService(render::PipelineOptions options, int max_waiters)
+    : pipeline_(std::move(options)), max_waiters_(max_waiters) {}
 
 json PreviewService::answer(const render::PreviewJob& job, const std::string& url_prefix) const {
   const std::string base = url_prefix + "/" + job.id();
@@ -133,11 +134,24 @@ json PreviewService::answer(const render::PreviewJob& job, const std::string& ur
 json PreviewService::start(const json& request, const std::string& presets_dir, const std::string& url_prefix) {
   PreviewPlan plan = plan_preview(request, presets_dir);
   const auto job = pipeline_.submit(plan.canonical, plan.settings, plan.make_frames);
-  if (plan.wait) {
-    try {
-      job->wait();
-    } catch (const std::runtime_error& e) {
-      throw Problem(500, "Render failed", "", e.what());
+  if (plan.wait && !job->progress().finished) {
+    // A waiter's slot is taken before the check, so two racing requests cannot both pass at the cap.
+    const bool may_wait = waiters_.fetch_add(1, std::memory_order_acq_rel) < max_waiters_;
+    struct Release {
+      std::atomic<int>& n;
+      ~Release() { n.fetch_sub(1, std::memory_order_acq_rel); }
+    } release{waiters_};
+    if (may_wait) {
+      try {
+        job->wait();
+      } catch (const std::runtime_error& e) {
+        throw Problem(500, "Render failed", "", e.what());
+      }
+    } else {
+      plan.warnings.push_back({{"code", "wait_declined"},
+                               {"message", std::to_string(max_waiters_) +
+                                               " requests already wait for frames; answered at once: "
+                                               "poll progress_url"}});
     }
   }
   json out = answer(*job, url_prefix);

@@ -4,10 +4,12 @@
 // "filmstrip_every", "mass_model" and "wait". One long-lived frame pipeline serves every request; its
 // workers create their GL contexts only when the first frame is asked for.
 
+#include <atomic>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "softtune/render/frame_pipeline.h"
 
@@ -27,9 +29,16 @@ struct PreviewPlan {
 /// Reads a preview request; throws Problem (422) naming the field.
 PreviewPlan plan_preview(const nlohmann::json& request, const std::string& presets_dir);
 
+/// Requests that may wait ("wait": true) for frames still rendering at one time. The render pool
+/// draws one preview at a time on all its workers, so a further waiter would only hold one of the
+/// server's worker threads, and enough of them starve health and tune: 16 waiting previews on 8
+/// threads kept health from answering for 4 s. Past this cap a request is answered at once, as with
+/// "wait": false, with a `wait_declined` warning; its render goes on.
+inline constexpr int kMaxPreviewWaiters = 2;
+
 class PreviewService {
  public:
-  explicit PreviewService(render::PipelineOptions options = {});
+  explicit PreviewService(render::PipelineOptions options = {}, int max_waiters = kMaxPreviewWaiters);
 
   /// Starts (or finds) a preview; `url_prefix` is where its frames are served ("/api/v1/preview").
   nlohmann::json start(const nlohmann::json& request, const std::string& presets_dir, const std::string& url_prefix);
@@ -45,6 +54,8 @@ class PreviewService {
   nlohmann::json answer(const render::PreviewJob& job, const std::string& url_prefix) const;
 
   render::FramePipeline pipeline_;
+  const int max_waiters_;
+  std::atomic<int> waiters_{0};
 };
 
 }  // namespace softtune::codec

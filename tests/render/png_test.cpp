@@ -51,6 +51,16 @@ TEST(Png, HigherLevelIsNotLarger) {
   EXPECT_LE(encode_png(px, s, {9, PngFilter::up}).size(), encode_png(px, s, {0, PngFilter::up}).size());
 }
 
+// Cached previews hold these strings for long: a flat frame compresses to a few hundred bytes and
+// must not keep the encoder's guess of the size (an eighth of the RGBA) as capacity.
+TEST(Png, HoldsNoMoreThanItsBytes) {
+  const ImageSize s{640, 360};
+  const std::vector<std::uint8_t> flat(static_cast<std::size_t>(s.width) * s.height * 4, 200);
+  const std::string png = encode_png(flat, s);
+  EXPECT_LT(png.size(), 4096u);
+  EXPECT_LE(png.capacity(), png.size() + 64);
+}
+
 TEST(Png, RefusesABufferOfTheWrongSize) {
   std::vector<std::uint8_t> px(10);
   EXPECT_THROW(encode_png(px, {4, 4}), std::invalid_argument);
