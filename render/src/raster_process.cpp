@@ -35,7 +35,7 @@ std::string raster_executable() {
     dir.resize(dir.rfind('/') + 1);
     candidates.push_back(dir + "softtune-raster");
   }
-  candidates.emplace_back(SOFTTUNE_RASTER_PATH);
+  if (candidates.empty() || candidates.front() != SOFTTUNE_RASTER_PATH) candidates.emplace_back(SOFTTUNE_RASTER_PATH);
   std::string tried;
   for (const std::string& path : candidates) {
     if (access(path.c_str(), X_OK) == 0) return path;

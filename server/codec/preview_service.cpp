@@ -134,13 +134,20 @@ json PreviewService::answer(const render::PreviewJob& job, const std::string& ur
 json PreviewService::start(const json& request, const std::string& presets_dir, const std::string& url_prefix) {
   PreviewPlan plan = plan_preview(request, presets_dir);
   const auto job = pipeline_.submit(plan.canonical, plan.settings, plan.make_frames);
-  if (plan.wait && !job->progress().finished) {
-    // A waiter's slot is taken before the check, so two racing requests cannot both pass at the cap.
-    const bool may_wait = waiters_.fetch_add(1, std::memory_order_acq_rel) < max_waiters_;
-    struct Release {
-      std::atomic<int>& n;
-      ~Release() { n.fetch_sub(1, std::memory_order_acq_rel); }
-    } release{waiters_};
+  if (plan.wait) {
+    // A request whose frames are done (cached, or failed already) takes no waiter's slot. A slot is
+    // taken before the check, so two racing requests cannot both pass at the cap.
+    struct Slot {
+      std::atomic<int>* n = nullptr;
+      ~Slot() {
+        if (n) n->fetch_sub(1, std::memory_order_acq_rel);
+      }
+    } slot;
+    bool may_wait = true;
+    if (!job->progress().finished) {
+      slot.n = &waiters_;
+      may_wait = waiters_.fetch_add(1, std::memory_order_acq_rel) < max_waiters_;
+    }
     if (may_wait) {
       try {
         job->wait();
