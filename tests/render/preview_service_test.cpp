@@ -7,6 +7,9 @@
 #include <condition_variable>
 #include <future>
 #include <mutex>
+#include <stdexcept>
+
+#include "codec/problem.h"
 
 namespace softtune::codec {
 namespace {
@@ -81,6 +84,28 @@ TEST(PreviewService, PastTheWaiterCapARequestIsAnsweredAtOnceAndStillRendered) {
   EXPECT_EQ(again["status"], "done");
   EXPECT_EQ(again["id"], second["id"]);
   EXPECT_FALSE(has_warning(again, "wait_declined"));
+}
+
+// Whether the frames fail while the request waits or before it looks, the answer is the same problem.
+TEST(PreviewService, FailedFramesAreARenderFailedProblem) {
+  struct Failing final : public render::Renderer {
+    void render(const render::DrawFrame&, const render::Camera&, render::ImageSize, std::span<std::uint8_t>) override {
+      throw std::runtime_error("injected GL fault");
+    }
+  };
+  render::PipelineOptions options;
+  options.make_renderer = [] { return std::make_unique<Failing>(); };
+  PreviewService service(options);
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    try {
+      service.start(oscillator(12 + attempt), "", "/p");
+      ADD_FAILURE() << "a failed preview was answered";
+    } catch (const Problem& p) {
+      EXPECT_EQ(p.status, 500);
+      EXPECT_EQ(p.title, "Render failed");
+      EXPECT_NE(p.detail.find("injected GL fault"), std::string::npos) << p.detail;
+    }
+  }
 }
 
 }  // namespace
