@@ -232,7 +232,7 @@ void FramePipeline::run_task(const Task& task, std::unique_ptr<Renderer>& render
   if (!job.failed.load(std::memory_order_acquire)) {
     try {
       const ImageSize size = job.settings.size;
-      pixels.resize(static_cast<std::size_t>(size.width) * size.height * 4);
+      pixels.resize(rgba_bytes(size));
       if (!renderer) renderer = options_.make_renderer();
       const auto t0 = Clock::now();
       renderer->render(job.frames.frames[task.index], job.frames.camera, size, pixels);

@@ -161,8 +161,7 @@ OsmesaRasterizer::~OsmesaRasterizer() = default;
 bool OsmesaRasterizer::has_context() const { return gl_ != nullptr; }
 
 void OsmesaRasterizer::rasterize(std::span<const Vertex> vertices, ImageSize size, std::span<std::uint8_t> rgba) {
-  if (size.width <= 0 || size.height <= 0 ||
-      rgba.size() != static_cast<std::size_t>(size.width) * static_cast<std::size_t>(size.height) * 4) {
+  if (!is_rgba_of(size, rgba.size())) {
     throw std::invalid_argument("render: the pixel buffer does not match the image size");
   }
   if (!gl_) {

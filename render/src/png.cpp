@@ -52,8 +52,7 @@ bool write(png_structp png, png_infop info, ImageSize size, int level, int filte
 }  // namespace
 
 std::string encode_png(std::span<const std::uint8_t> rgba, ImageSize size, PngOptions options) {
-  if (size.width <= 0 || size.height <= 0 ||
-      rgba.size() != static_cast<std::size_t>(size.width) * static_cast<std::size_t>(size.height) * 4) {
+  if (!is_rgba_of(size, rgba.size())) {
     throw std::invalid_argument("png: the pixel buffer does not match the image size");
   }
   std::string out, error;

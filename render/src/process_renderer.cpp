@@ -20,8 +20,7 @@ class ProcessRenderer final : public Renderer {
       : options_{.msaa_samples = options.msaa_samples, .llvmpipe_threads = options.llvmpipe_threads} {}
 
   void render(const DrawFrame& frame, const Camera& camera, ImageSize size, std::span<std::uint8_t> rgba) override {
-    if (size.width <= 0 || size.height <= 0 ||
-        rgba.size() != static_cast<std::size_t>(size.width) * static_cast<std::size_t>(size.height) * 4) {
+    if (!is_rgba_of(size, rgba.size())) {
       throw std::invalid_argument("render: the pixel buffer does not match the image size");
     }
     const View view = make_view(resolve_camera(camera, frame, size), size);

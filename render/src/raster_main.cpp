@@ -85,13 +85,12 @@ int main(int argc, char** argv) {
     if (receive_exact(kSocketFd, vertices.data(), vertices.size() * sizeof(Vertex), -1) != Io::ok) return 2;
 
     const ImageSize size{static_cast<int>(request.width), static_cast<int>(request.height)};
-    rgba.resize(static_cast<std::size_t>(size.width) * static_cast<std::size_t>(size.height) * 4);
+    rgba.resize(rgba_bytes(size));
     RasterReply reply;
     try {
-      reply.context_created = rasterizer.has_context() ? 0 : 1;
+      reply.context_created = rasterizer.has_context() ? 0 : 1;  // a frame that throws creates none
       rasterizer.rasterize(vertices, size, rgba);
       reply.ok = 1;
-      reply.context_created = reply.context_created && rasterizer.has_context();
     } catch (const std::exception& e) {
       if (!reply_error(e.what())) return 0;
       continue;

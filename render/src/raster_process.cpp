@@ -143,9 +143,8 @@ void RasterProcess::fail(const std::string& what) {
 void RasterProcess::rasterize(std::span<const Vertex> vertices, ImageSize size, std::span<std::uint8_t> rgba) {
   using raster::Io;
   if (!alive()) throw std::runtime_error("render: the raster process is not running");
-  if (size.width <= 0 || size.height <= 0 || static_cast<std::uint32_t>(size.width) > raster::kMaxSide ||
-      static_cast<std::uint32_t>(size.height) > raster::kMaxSide || vertices.size() > raster::kMaxVertices ||
-      rgba.size() != static_cast<std::size_t>(size.width) * static_cast<std::size_t>(size.height) * 4) {
+  if (!is_rgba_of(size, rgba.size()) || static_cast<std::uint32_t>(size.width) > raster::kMaxSide ||
+      static_cast<std::uint32_t>(size.height) > raster::kMaxSide || vertices.size() > raster::kMaxVertices) {
     throw std::invalid_argument("render: the frame does not fit the raster process (size, vertices or buffer)");
   }
   raster::RasterRequest request;

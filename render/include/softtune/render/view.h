@@ -1,6 +1,8 @@
 #pragma once
 // World (metres, y up) -> image pixels (x right, y down, origin at the top-left corner).
 
+#include <cstddef>
+
 #include "softtune/render/draw_model.h"
 
 namespace softtune::render {
@@ -11,6 +13,16 @@ struct ImageSize {
   int height = 360;
   bool operator==(const ImageSize&) const = default;
 };
+
+/// Bytes of a straight RGBA image of `size` (4 per pixel).
+inline std::size_t rgba_bytes(ImageSize size) {
+  return static_cast<std::size_t>(size.width) * static_cast<std::size_t>(size.height) * 4;
+}
+
+/// Whether `bytes` hold exactly one RGBA image of `size`, and the size is positive.
+inline bool is_rgba_of(ImageSize size, std::size_t bytes) {
+  return size.width > 0 && size.height > 0 && bytes == rgba_bytes(size);
+}
 
 /// Fraction of the image height kept free at the top for the caption when a camera is fitted.
 inline constexpr double kCaptionBand = 0.16;
