@@ -10,7 +10,7 @@ packages=(
   libeigen3-dev                      # core math
   nlohmann-json3-dev                 # server: JSON codec
   libgtest-dev libbenchmark-dev      # tests, benchmarks
-  libbox2d-dev                       # core/scene: Box2D 2.4 scenes
+  libbox2d-dev                       # scene/ and engines/box2d_v2_4: Box2D 2.4
   libosmesa6-dev libpng-dev          # render: off-screen frames, PNG
   libcpp-httplib-dev                 # server: HTTP
   chromium                           # browser tests

@@ -15,6 +15,7 @@ std::string_view stage_name(Stage s) {
     case Stage::exact_softness: return "exact_softness";
     case Stage::discrete_analysis: return "discrete_analysis";
     case Stage::engine_export: return "engine_export";
+    case Stage::engine_models: return "engine_models";
     case Stage::accuracy_runs: return "accuracy_runs";
     case Stage::box2d_distance_joint: return "box2d_distance_joint";
     case Stage::recommendation: return "recommendation";
@@ -162,6 +163,23 @@ TuneResult tune(const TuneRequest& r) {
   in.spring = out.spring;
   in.box2d_reduced_mass = out.box2d_reduced_mass;
   out.engines = export_engines(in, out.warnings);
+
+  // Each engine's own step (SPEC.md 5): what it does with the export, and what makes it do the request.
+  out.stages.add(Stage::engine_models);
+  engines::Target target;
+  target.effective_mass = out.effective_mass;
+  target.omega = out.omega;
+  target.damping_ratio = out.damping_ratio;
+  target.dt = out.h;
+  target.spring = out.spring;
+  target.box2d_reduced_mass = out.box2d_reduced_mass;
+  const auto models = engines::engine_models();
+  out.engine_reports.reserve(models.size());
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    const bool given = i < r.engine_settings.size() && !r.engine_settings[i].empty();
+    out.engine_reports.push_back(
+        models[i]->report(target, given ? r.engine_settings[i] : engines::default_settings(*models[i])));
+  }
   return out;
 }
 

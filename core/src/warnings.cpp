@@ -18,6 +18,9 @@ std::string_view warning_code_name(WarningCode code) {
     case WarningCode::mujoco_direct_solref: return "mujoco_direct_solref";
     case WarningCode::box2d_reduced_mass_error: return "box2d_reduced_mass_error";
     case WarningCode::engine_note: return "engine_note";
+    case WarningCode::engine_refuses: return "engine_refuses";
+    case WarningCode::engine_inexact: return "engine_inexact";
+    case WarningCode::engine_unstable: return "engine_unstable";
   }
   return "warning";
 }
@@ -67,6 +70,19 @@ std::string warning_message(const Warning& w) {
     case WarningCode::engine_note:
       return format("%.*s cannot express this tuning exactly", static_cast<int>(w.engine.size()),
                     w.engine.data());
+    case WarningCode::engine_refuses:
+      return format("%.*s: the plain export (%.6g) is not what the engine runs: %.*s",
+                    static_cast<int>(w.engine.size()), w.engine.data(), w.value,
+                    static_cast<int>(w.detail.size()), w.detail.data());
+    case WarningCode::engine_inexact:
+      return format("%.*s cannot meet the request exactly (%.*s); the nearest it can runs %+.2f%% off the "
+                    "frequency with damping ratio off by %+.4f", static_cast<int>(w.engine.size()),
+                    w.engine.data(), static_cast<int>(w.detail.size()), w.detail.data(), 100.0 * w.value,
+                    w.limit);
+    case WarningCode::engine_unstable:
+      return format("%.*s blows up with the plain export (spectral radius %.6g per step): use its exact "
+                    "parameters, more substeps or a lower frequency", static_cast<int>(w.engine.size()),
+                    w.engine.data(), w.value);
   }
   return "warning";
 }

@@ -28,7 +28,7 @@ inline constexpr double kMinFramesAtLowestRate = 8.0;
 
 namespace softtune {
 
-/// A run outside core (the CLI injects Box2D 2.4's distance joint, core/box2d_spring): the oscillator
+/// A run outside core (the CLI injects Box2D 2.4's distance joint, engines/box2d_v2_4): the oscillator
 /// (kg, N/m, N s/m) released at x0 (m) from rest, stepped `steps` times with step h (s). Returns the
 /// position after every step, x0 first (steps + 1 samples).
 struct EngineRunner {

@@ -12,6 +12,7 @@
 #include "softtune/discrete_analysis.h"
 #include "softtune/effective_mass.h"
 #include "softtune/engine_export.h"
+#include "softtune/engines/engine_model.h"
 #include "softtune/warnings.h"
 
 namespace softtune {
@@ -32,12 +33,16 @@ struct TuneRequest {
   SoftMode mode = SoftMode::standard;
   std::optional<double> effective_mass;     ///< kg (or kg m^2 for angular)
   std::optional<AnyConstraint> constraint;  ///< instead of effective_mass
+  /// Per modelled engine (indexed like engines::engine_models()), the settings its model assumes; a
+  /// missing or empty entry means the engine's defaults. Values within each SettingSpec's range.
+  std::vector<engines::SettingValues> engine_settings;
 };
 
 /// The stages a computation ran, in order; the response lists them so callers see what was left out.
 enum class Stage : std::uint8_t {
   // tune
   validate, designer_mapping, effective_mass, softness, exact_softness, discrete_analysis, engine_export,
+  engine_models,
   // scenes
   scene_setup, core_integrator, box2d_world, box2d_step, snapshots, response_fit, expectations,
   // accuracy and stability
@@ -75,6 +80,9 @@ struct TuneResult {
   double achieved_spectral_radius = 0.0;
   std::array<DiscreteAnalysis, kAllMethods.size()> stability;  ///< indexed like kAllMethods
   EngineExport engines;
+  /// Per modelled engine (indexed like engines::engine_models()): its settings, what to type, what it
+  /// will do, and what to type so it does what was asked.
+  std::vector<engines::EngineReport> engine_reports;
   Warnings warnings;
   StageList stages;
 };

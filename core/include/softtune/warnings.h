@@ -20,6 +20,11 @@ enum class WarningCode {
   mujoco_direct_solref,    ///< timeconst < 2h: MuJoCo would clamp it; the direct form is exported
   box2d_reduced_mass_error,  ///< b2LinearStiffness's reduced mass misses the frequency. value: relative
   engine_note,             ///< an engine cannot express this tuning exactly. text says which
+  engine_refuses,          ///< the plain export is refused, replaced or divided by zero in the engine.
+                           ///< detail: the engine's rule; value: the offending number
+  engine_inexact,          ///< no parameters make the engine meet the request. value: the nearest's
+                           ///< relative frequency error, limit: its damping ratio error; detail: why
+  engine_unstable,         ///< the engine's step blows up with the plain export. value: spectral radius
 };
 
 struct Warning {
@@ -27,6 +32,7 @@ struct Warning {
   double value = 0.0;  ///< the offending value (units per code above)
   double limit = 0.0;  ///< the limit or the value used instead
   std::string_view engine = {};  ///< for engine warnings: which engine
+  std::string_view detail = {};  ///< for engine warnings: the engine's rule, a static string
 };
 
 using Warnings = std::vector<Warning>;

@@ -1,0 +1,80 @@
+// Box2D 2.4.1's model against the talk: one world step with one soft joint is implicit Euler (SPEC.md 1),
+// so its plain export predicts standard softness and its exact parameters are softtune's k', c'.
+#include "softtune/engines/box2d_v2_4.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "softtune/designer.h"
+#include "softtune/discrete_analysis.h"
+#include "softtune/exact_softness.h"
+#include "softtune/integrators.h"
+
+namespace softtune::engines {
+namespace {
+
+Target target(double hz, double zeta, double m, double h, SpringConstants spring) {
+  Target t;
+  t.effective_mass = m;
+  t.omega = 2.0 * std::numbers::pi * hz;
+  t.damping_ratio = zeta;
+  t.dt = h;
+  t.spring = spring;
+  return t;
+}
+
+TEST(Box2DV24Model, StepMapIsImplicitEuler) {
+  const double m = 3.0, k = 500.0, c = 4.0, h = 1.0 / 60.0;
+  const Eigen::MatrixXd a = box2d_v2_4_step_map(m, k, c, h);
+  for (State s0 : {State{1.0, 0.0}, State{0.0, 1.0}, State{0.3, -2.0}}) {
+    const State s1 = implicit_euler_step(s0, Oscillator{m, k, c}, h);
+    EXPECT_NEAR(a(0, 0) * s0.x + a(0, 1) * s0.v, s1.x, 1e-12);
+    EXPECT_NEAR(a(1, 0) * s0.x + a(1, 1) * s0.v, s1.v, 1e-12);
+  }
+}
+
+TEST(Box2DV24Model, StandardExportPredictsImplicitEulersPoles) {
+  // SPEC.md: asked 10 Hz free at 60 fps, standard softness gives 8.49 Hz natural with zeta 0.416.
+  const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * std::numbers::pi * 10.0;
+  const EngineReport r = kBox2DV24Model.report(target(10.0, 0.0, m, h, spring_constants(m, omega, 0.0)),
+                                               default_settings(kBox2DV24Model));
+  ASSERT_TRUE(r.predicted.frequency_hz);
+  EXPECT_NEAR(*r.predicted.frequency_hz, 8.49, 0.01);
+  EXPECT_NEAR(*r.predicted.damping_ratio, 0.416, 0.001);
+  // Implicit Euler always damps; undamped is reached within the tolerance only by a spring whose
+  // damping + h stiffness stays clear of zero (Box2D computes it in float and turns rigid at 0).
+  ASSERT_TRUE(r.exact && r.exact_predicted);
+  const double k = *parameter_value(*r.exact, "b2DistanceJointDef::stiffness");
+  const double d = *parameter_value(*r.exact, "b2DistanceJointDef::damping");
+  EXPECT_GE(d + h * k, kBox2DV24FloatMargin * h * k);
+  EXPECT_LE(std::abs(*r.exact_predicted->damping_ratio), kExactDampingTolerance);
+  EXPECT_NEAR(*r.exact_predicted->frequency_hz, 10.0, 10.0 * kExactFrequencyTolerance);
+}
+
+TEST(Box2DV24Model, ExactParametersAreTheExactSoftSpring) {
+  const double m = 0.5, h = 1.0 / 120.0;
+  for (double zeta : {0.1, 0.5, 1.5}) {
+    const double omega = 2.0 * std::numbers::pi * 7.0;
+    const EngineReport r = kBox2DV24Model.report(target(7.0, zeta, m, h, spring_constants(m, omega, zeta)),
+                                                 default_settings(kBox2DV24Model));
+    ASSERT_TRUE(r.exact && r.exact_predicted) << zeta;
+    const ExactSpring closed = exact_spring(m, omega, zeta, h);
+    EXPECT_NEAR((*r.exact)[0].value, closed.spring.stiffness, 2e-3 * closed.spring.stiffness);
+    EXPECT_NEAR(*r.exact_predicted->frequency_hz, 7.0, 7e-3);
+    EXPECT_NEAR(*r.exact_predicted->damping_ratio, zeta, 5e-3);
+  }
+}
+
+TEST(Box2DV24Model, ASpringTheEngineTurnsRigidIsReportedNotPredicted) {
+  // Exact mode at zeta = 0 gives c' = -h k': Box2D sets m_gamma = 0 and the joint goes rigid.
+  const double m = 1.0, h = 1.0 / 60.0, k = 1000.0;
+  const EngineReport r = kBox2DV24Model.report(target(5.0, 0.0, m, h, {k, -h * k}),
+                                               default_settings(kBox2DV24Model));
+  EXPECT_FALSE(r.predicted.frequency_hz);
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_EQ(r.warnings[0].code, WarningCode::engine_refuses);
+}
+
+}  // namespace
+}  // namespace softtune::engines
