@@ -20,8 +20,8 @@ void init_ode_for_this_thread() {
 }
 
 double setting(const SettingValues& values, int index) {
-  return static_cast<std::size_t>(index) < values.size() ? values[static_cast<std::size_t>(index)]
-                                                         : kOdeModel.settings[static_cast<std::size_t>(index)].default_value;
+  const auto i = static_cast<std::size_t>(index);
+  return i < values.size() ? values[i] : kOdeModel.settings[i].default_value;
 }
 
 RunTrajectory run_ode(const EngineRun& run) {

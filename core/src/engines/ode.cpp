@@ -29,6 +29,7 @@
 // c = (1 - ERP) / CFM (the user guide's ERP = h k / (h k + c), CFM = 1 / (h k + c)).
 #include "softtune/engines/ode.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 

@@ -40,6 +40,7 @@
 // which slows a rotating body's turn: set it to 0 for the rotating case).
 #include "softtune/engines/physx.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 

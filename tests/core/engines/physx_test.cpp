@@ -279,7 +279,8 @@ TEST(PhysxModel, LightDampingNeedsNegativeDampingWhichPhysxRefuses) {
 TEST(PhysxModel, TgsSubstepsReachZeroDampingWithinTheTolerance) {
   // 255 position iterations: the undamped drive's own damping is about omega h / 510 = 0.002 < 0.005.
   const double m = 2.0, h = 1.0 / 60.0, hz = 10.0, omega = 2.0 * std::numbers::pi * hz;
-  const EngineReport r = kPhysxModel.report(target(hz, 0.0, m, h, spring_constants(m, omega, 0.0)), settings(1, 255, 1, 0));
+  const EngineReport r =
+      kPhysxModel.report(target(hz, 0.0, m, h, spring_constants(m, omega, 0.0)), settings(1, 255, 1, 0));
   ASSERT_TRUE(r.exact && r.exact_predicted);
   EXPECT_EQ((*r.exact)[1].value, 0.0);
   EXPECT_NEAR(*r.exact_predicted->frequency_hz, hz, 1e-8 * hz);
@@ -311,7 +312,8 @@ struct Worst {
 std::optional<ResponseFit> run_loop(const Parameters& p, const SettingValues& s, double m, double dt, int steps) {
   const bool acceleration = s[kPhysxDriveType] != 0.0, tgs = s[kPhysxSolverType] != 0.0;
   const float k = static_cast<float>(p[0].value), d = static_cast<float>(p[1].value), h = static_cast<float>(dt);
-  const int position = static_cast<int>(s[kPhysxPositionIterations]), velocity = static_cast<int>(s[kPhysxVelocityIterations]);
+  const int position = static_cast<int>(s[kPhysxPositionIterations]);
+  const int velocity = static_cast<int>(s[kPhysxVelocityIterations]);
   // The loops take the row's mass; an acceleration drive runs on the true mass too (it divides it out).
   const float body_mass = static_cast<float>(m);
   RowT<float> row{1e-2f, 0.0f};
@@ -354,14 +356,16 @@ TEST(PhysxModel, LiteralFloatLoopsMeetTheReportOverTheGrid) {
             const double asked_hz = result.omega / (2.0 * std::numbers::pi);
             const int steps = std::clamp(static_cast<int>(8.0 / (asked_hz * result.h)), 300, 4000);
             auto has = [&](WarningCode code) {
-              return std::any_of(r.warnings.begin(), r.warnings.end(), [&](const Warning& w) { return w.code == code; });
+              return std::any_of(r.warnings.begin(), r.warnings.end(),
+                                 [&](const Warning& w) { return w.code == code; });
             };
             // A run can be fitted when its motion stays above fit_response's floor for a dozen samples and, when
             // over-damped, its fast pole outlives the first step above float's rounding (|z_fast| > 1e-2):
             // a pole that dies within one step leaves a pure exponential whose partner only noise can fit.
             auto fittable = [&](const Parameters& p) {
               const Eigen::Matrix2d a =
-                  physx_step_map(v[kPhysxDriveType] != 0.0 ? 1.0 : mass, p[0].value, p[1].value, result.h, physx_substeps(v));
+                  physx_step_map(v[kPhysxDriveType] != 0.0 ? 1.0 : mass, p[0].value, p[1].value, result.h,
+                                 physx_substeps(v));
               const double tr = a.trace(), det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0), disc = tr * tr - 4.0 * det;
               const double radius = disc < 0.0 ? std::sqrt(det) : 0.5 * (std::abs(tr) + std::sqrt(disc));
               const double smallest = disc < 0.0 ? radius : std::abs(det) / radius;
@@ -409,9 +413,12 @@ TEST(PhysxModel, LiteralFloatLoopsMeetTheReportOverTheGrid) {
   }
   std::printf("PhysX 5 literal float loops: %d cases (%d plain exports refused, %d exact null, %d runs decay too fast "
               "to fit in float)\n", cases, refused, inexact, unfit);
-  std::printf("  parameters vs predicted   %4d runs  worst %.3g%% / %.3g\n", standard.runs, 100 * standard.frequency, standard.damping);
-  std::printf("  exact vs exact_predicted  %4d runs  worst %.3g%% / %.3g\n", exact.runs, 100 * exact.frequency, exact.damping);
-  std::printf("  exact vs request          %4d runs  worst %.3g%% / %.3g\n", versus_request.runs, 100 * versus_request.frequency, versus_request.damping);
+  auto row = [](const char* name, const Worst& w) {
+    std::printf("  %-26s %4d runs  worst %.3g%% / %.3g\n", name, w.runs, 100 * w.frequency, w.damping);
+  };
+  row("parameters vs predicted", standard);
+  row("exact vs exact_predicted", exact);
+  row("exact vs request", versus_request);
   EXPECT_GE(cases, 300);
 }
 
