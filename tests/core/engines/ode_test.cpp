@@ -247,5 +247,40 @@ TEST(OdeModel, OneOverRelaxedSweepCanBlowUpAndIsFlagged) {
   }
 }
 
+TEST(OdeModel, NeverExportsOutsideTheLegalRanges) {
+  // Whatever is asked, every exported ERP is in (0, kOdeMaxErp] and every CFM positive and finite, and an
+  // `exact` meets the request as predicted.
+  int exported = 0;
+  for (const SettingValues& settings : {default_settings(kOdeModel), quickstep(1, 1.3), quickstep(2, 0.3),
+                                        quickstep(20, 1.9)}) {
+    for (double hz : {0.1, 3.0, 40.0, 1000.0}) {
+      for (double zeta : {0.0, 1e-3, 0.3, 1.0, 5.0, 50.0}) {
+        for (double m : {1e-6, 1.0, 1e6}) {
+          for (double h : {1.0 / 30.0, 1.0 / 240.0, 1.0 / 2000.0}) {
+            const double omega = 2.0 * std::numbers::pi * hz;
+            for (SpringConstants spring : {spring_constants(m, omega, zeta), exact_spring(m, omega, zeta, h).spring}) {
+              const EngineReport r = kOdeModel.report(target(hz, zeta, m, h, spring), settings);
+              for (const std::optional<Parameters>& p : {std::optional<Parameters>(r.parameters), r.exact}) {
+                if (!p || p->empty()) continue;
+                ++exported;
+                EXPECT_GT((*p)[0].value, 0.0);
+                EXPECT_LE((*p)[0].value, kOdeMaxErp);
+                EXPECT_GT((*p)[1].value, 0.0);
+                EXPECT_TRUE(std::isfinite((*p)[1].value));
+              }
+              if (r.exact) {
+                ASSERT_TRUE(r.exact_predicted && r.exact_predicted->frequency_hz);
+                EXPECT_NEAR(*r.exact_predicted->frequency_hz / hz, 1.0, kExactFrequencyTolerance);
+                EXPECT_NEAR(*r.exact_predicted->damping_ratio, zeta, kExactDampingTolerance);
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(exported, 1000);
+}
+
 }  // namespace
 }  // namespace softtune::engines

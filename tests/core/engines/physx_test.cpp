@@ -295,6 +295,41 @@ TEST(PhysxModel, DrivesBeyondFloatAreRefused) {
   EXPECT_EQ(r.warnings[0].code, WarningCode::engine_refuses);
 }
 
+TEST(PhysxModel, NeverExportsOutsideTheLegalRanges) {
+  // Whatever is asked, every exported drive passes PxD6JointDrive::isValid in float (stiffness > 0,
+  // damping >= 0, both <= FLT_MAX), and an `exact` meets the request as predicted.
+  int exported = 0;
+  for (const SettingValues& s :
+       {settings(0, 4, 1, 0), settings(0, 4, 1, 1), settings(1, 4, 1, 0), settings(1, 255, 0, 1)}) {
+    for (double hz : {0.1, 3.0, 40.0, 1000.0}) {
+      for (double zeta : {0.0, 1e-3, 0.3, 1.0, 5.0, 50.0}) {
+        for (double m : {1e-6, 1.0, 1e6}) {
+          for (double h : {1.0 / 30.0, 1.0 / 240.0, 1.0 / 2000.0}) {
+            const double omega = 2.0 * std::numbers::pi * hz;
+            for (SpringConstants spring : {spring_constants(m, omega, zeta), exact_spring(m, omega, zeta, h).spring}) {
+              const EngineReport r = kPhysxModel.report(target(hz, zeta, m, h, spring), s);
+              for (const std::optional<Parameters>& p : {std::optional<Parameters>(r.parameters), r.exact}) {
+                if (!p || p->empty()) continue;
+                ++exported;
+                EXPECT_GT((*p)[0].value, 0.0);
+                EXPECT_LE((*p)[0].value, kFltMax);
+                EXPECT_GE((*p)[1].value, 0.0);
+                EXPECT_LE((*p)[1].value, kFltMax);
+              }
+              if (r.exact) {
+                ASSERT_TRUE(r.exact_predicted && r.exact_predicted->frequency_hz);
+                EXPECT_NEAR(*r.exact_predicted->frequency_hz / hz, 1.0, kExactFrequencyTolerance);
+                EXPECT_NEAR(*r.exact_predicted->damping_ratio, zeta, kExactDampingTolerance);
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(exported, 1000);
+}
+
 // The conformance grid of the real engines (tests/engines), run on the literal loops above in float, as PhysX
 // computes: for each case tune() answers, PhysX's `parameters` and `exact` drive pgs_simulate / tgs_simulate,
 // the trajectory is fitted, and the fit is held within 1 % / 0.02 of `predicted`, and for `exact` of the
