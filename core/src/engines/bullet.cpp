@@ -208,6 +208,16 @@ void report_erp_cfm(const Target& t, int n, EngineReport& out) {
     const double erp = as_float(h * k / denominator), cfm = as_float(1.0 / denominator);
     out.parameters = erp_cfm_parameters(erp, cfm);
     out.predicted = predict_erp_cfm(erp, cfm, n, h);
+    if (!(erp > 0.0 && erp <= 1.0)) {
+      out.warnings.push_back({WarningCode::engine_refuses, erp, 1.0, kBulletModel.name,
+                              "ERP is an error reduction in 0..1 (btConstraintInfo2); above 1 the bias "
+                              "overshoots the error"});
+    }
+    if (!(cfm < 1.0)) {
+      out.warnings.push_back({WarningCode::engine_refuses, cfm, 1.0, kBulletModel.name,
+                              "a CFM of 1 or more makes the solver's sweeps lambda = rhs - CFM lambda "
+                              "diverge as they repeat"});
+    }
     if (!out.predicted.stable) {
       out.warnings.push_back({WarningCode::engine_unstable, out.predicted.spectral_radius, 1.0,
                               kBulletModel.name,

@@ -239,6 +239,7 @@ TEST(BulletModel, ErpCfmOldExportIsNotBulletsConvention) {
   EXPECT_NEAR(*parameter_value(r.parameters, kBulletStopCfm), 1.0 / (h * s.stiffness + s.damping), 1e-3);
   EXPECT_FALSE(r.predicted.stable);
   EXPECT_TRUE(has_warning(r, WarningCode::engine_unstable));
+  EXPECT_TRUE(has_warning(r, WarningCode::engine_refuses));  // CFM >= 1 is outside the legal range
   // Exact: Bullet's own convention, inside the legal ranges.
   ASSERT_TRUE(r.exact && r.exact_predicted);
   const double erp = *parameter_value(*r.exact, kBulletStopErp), cfm = *parameter_value(*r.exact, kBulletStopCfm);
@@ -305,6 +306,16 @@ TEST(BulletModel, ErpCfmNeverExportsOutsideItsRange) {
       }
     }
   }
+}
+
+TEST(BulletModel, ErpCfmPlainExportOutsideTheRangeIsFlagged) {
+  // Exact mode at zeta 0.02: c' < 0, so the old export's ERP = h k' / (h k' + c') is above 1.
+  const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * kPi * 5.0;
+  const ExactSpring e = exact_spring(m, omega, 0.02, h);
+  ASSERT_LT(e.spring.damping, 0.0);
+  const EngineReport r = kBulletModel.report(target(5.0, 0.02, m, h, e.spring), settings(kBulletRouteErpCfm, 10));
+  EXPECT_GT(*parameter_value(r.parameters, kBulletStopErp), 1.0);
+  EXPECT_TRUE(has_warning(r, WarningCode::engine_refuses));
 }
 
 TEST(BulletModel, ZeroDenominatorIsRefusedNotDivided) {

@@ -180,6 +180,7 @@ struct Tally {
   Worst plain, exact_vs_predicted, exact_vs_request;
   WorstTrajectory plain_trajectory, exact_trajectory, unstable;
   int exact_null = 0, total = 0, unstable_blown = 0;
+  int plain_met_request = 0;  // the plain export measured within 1 % / 0.02 of the request (the count)
 };
 
 constexpr double kTrajectoryTolerance = 2e-3;  // of the largest excursion
@@ -248,6 +249,10 @@ void run_case(const Case& c, Tally& tally) {
     const Measured m = measure(run);
     if (report.predicted.frequency_hz && fit_resolves(plain)) {
       check_fit(report.predicted, m, c, "parameters", tally.plain);
+      if (m.frequency_hz && m.damping_ratio && std::abs(*m.frequency_hz / asked_hz - 1.0) <= kFrequencyTolerance &&
+          std::abs(*m.damping_ratio - result.damping_ratio) <= kDampingTolerance) {
+        ++tally.plain_met_request;
+      }
     } else {
       check_trajectory(m, plain, c, "parameters", tally.plain_trajectory);
     }
@@ -308,27 +313,41 @@ TEST(BulletConformance, RealEngineDoesWhatTheModelSays) {
       }
     }
   }
-  Tally tally;
-  for (const Case& c : cases) run_case(c, tally);
-
-  std::printf("Bullet 3.24 (float) conformance, %d cases\n", tally.total);
-  std::printf("  %-44s %6s %13s %13s\n", "", "runs", "worst |df/f|", "worst |dzeta|");
+  // One table per route: the spring, and ERP/CFM at Bullet's 10 sweeps and at 4.
+  const char* names[] = {"spring2 (m_numIterations 10)", "erp_cfm (m_numIterations 10)", "erp_cfm (m_numIterations 4)"};
+  Tally tallies[3];
+  for (const Case& c : cases) {
+    run_case(c, tallies[c.route == kBulletRouteSpring2 ? 0 : c.iterations == 10 ? 1 : 2]);
+  }
+  int total = 0;
   auto row = [](const char* name, const Worst& w) {
-    std::printf("  %-44s %6d %13.2e %13.2e\n", name, w.cases, w.frequency, w.damping);
+    std::printf("    %-44s %6d %13.2e %13.2e\n", name, w.cases, w.frequency, w.damping);
   };
   auto trajectory_row = [](const char* name, const WorstTrajectory& w) {
-    std::printf("  %-44s %6d %13s %13s  trajectory vs model %.2e\n", name, w.cases, "-", "-", w.error);
+    std::printf("    %-44s %6d %13s %13s  trajectory vs model %.2e\n", name, w.cases, "-", "-", w.error);
   };
-  row("parameters: fit vs predicted", tally.plain);
-  trajectory_row("parameters: no fit resolves it (*)", tally.plain_trajectory);
-  trajectory_row("parameters: predicted unstable", tally.unstable);
-  std::printf("  %-44s %6d %13s %13s  blew up as predicted\n", "parameters: unstable, plank thrown in 1 step",
-              tally.unstable_blown, "-", "-");
-  row("exact: fit vs predicted", tally.exact_vs_predicted);
-  row("exact: fit vs request", tally.exact_vs_request);
-  trajectory_row("exact: no fit resolves it (*)", tally.exact_trajectory);
-  std::printf("  %-44s %6d\n", "exact null (engine_inexact)", tally.exact_null);
-  EXPECT_GE(tally.total, 60);
+  std::printf("Bullet 3.24 (float) conformance\n");
+  for (int r = 0; r < 3; ++r) {
+    const Tally& tally = tallies[r];
+    total += tally.total;
+    std::printf("  %s: %d cases\n", names[r], tally.total);
+    std::printf("    %-44s %6s %13s %13s\n", "", "runs", "worst |df/f|", "worst |dzeta|");
+    row("parameters: fit vs predicted", tally.plain);
+    trajectory_row("parameters: no fit resolves it (*)", tally.plain_trajectory);
+    trajectory_row("parameters: predicted unstable", tally.unstable);
+    std::printf("    %-44s %6d %13s %13s  blew up as predicted\n", "parameters: unstable, plank thrown in 1 step",
+                tally.unstable_blown, "-", "-");
+    std::printf("    %-44s %6d\n", "parameters: fit within 1 %/0.02 of request", tally.plain_met_request);
+    row("exact: fit vs predicted", tally.exact_vs_predicted);
+    row("exact: fit vs request", tally.exact_vs_request);
+    trajectory_row("exact: no fit resolves it (*)", tally.exact_trajectory);
+    std::printf("    %-44s %6d\n", "exact null (engine_inexact)", tally.exact_null);
+  }
+  std::printf("  (*) a pole below %.2g per step, or a slowest pole below %.2g: the motion is gone before a fit can\n"
+              "      read it; the trajectory is held against the model's step map instead (tolerance %.0e).\n",
+              kResolvablePole, kLastingPole, kTrajectoryTolerance);
+  std::printf("  total %d cases\n", total);
+  EXPECT_GE(total, 60);
 }
 
 }  // namespace
