@@ -1,7 +1,8 @@
 // Bullet 3.24 in process against its model (SPEC.md 5): for each case softtune::tune() answers, Bullet runs
 // the report's `parameters` and then its `exact`, the trajectory is fitted (fit_response), and the fit is
 // held against `predicted` (1 % frequency, 0.02 damping ratio) and, for `exact`, against the request.
-// Where the model predicts growth, Bullet must grow; where it says `exact` is null, it must say why.
+// Where no fit can read the motion (it is gone within a few steps) or the model predicts growth, Bullet's
+// trajectory is held against the model's step map; where the model says `exact` is null, it must say why.
 #include <gtest/gtest.h>
 
 #include <algorithm>
