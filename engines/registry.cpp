@@ -1,6 +1,7 @@
 // The real engines linked in process, in the order answers list them. Each engine room adds one line.
 #include <array>
 
+#include "bullet_engine.h"
 #include "ode_engine.h"
 #include "softtune/engines/verify.h"
 
@@ -9,6 +10,7 @@ namespace softtune::engines {
 std::span<const RealEngine* const> real_engines() {
   static constexpr std::array kEngines = {
       &kOdeEngine,
+      &kBulletEngine,
   };
   return kEngines;
 }

@@ -18,6 +18,7 @@ packages=(
   wrk                                # bench: HTTP load
   clang-14 libclang-rt-14-dev python3  # security: libFuzzer harnesses, attack suite
   valgrind                           # tests: uninitialised reads in the Box2D tests (memcheck)
+  libbullet-dev                      # engines/bullet, tests/engines/bullet: Bullet 3.24
 )
 
 missing=()

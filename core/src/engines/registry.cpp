@@ -2,6 +2,7 @@
 #include <array>
 
 #include "softtune/engines/box2d_v2_4.h"
+#include "softtune/engines/bullet.h"
 #include "softtune/engines/engine_model.h"
 #include "softtune/engines/ode.h"
 #include "softtune/engines/physx.h"
@@ -13,6 +14,7 @@ std::span<const EngineModel* const> engine_models() {
       &kBox2DV24Model,
       &kOdeModel,
       &kPhysxModel,
+      &kBulletModel,
   };
   return kModels;
 }
