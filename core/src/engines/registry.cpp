@@ -3,12 +3,16 @@
 
 #include "softtune/engines/box2d_v2_4.h"
 #include "softtune/engines/engine_model.h"
+#include "softtune/engines/jolt.h"
+#include "softtune/engines/rapier.h"
 
 namespace softtune::engines {
 
 std::span<const EngineModel* const> engine_models() {
   static constexpr std::array kModels = {
       &kBox2DV24Model,
+      &kJoltModel,
+      &kRapierModel,
   };
   return kModels;
 }
