@@ -2,7 +2,7 @@
 // softtune's answer alone: the `jolt` report's settings and its `parameters` (or `exact`).
 //
 //   point:          a body of mass m_eff free to move along x only (EAllowedDOFs_TranslationX), held by a
-//                   DistanceConstraint from a fixed point kRestLength behind it with mMinDistance =
+//                   DistanceConstraint from a fixed point kRestLength behind it (the body near the origin) with mMinDistance =
 //                   mMaxDistance = kRestLength and the report's SpringSettings as mLimitsSpringSettings.
 //   rotating_plank: a plank of mass 2 m_eff and inertia 2 m_eff 0.5^2 about z, moving in the plane
 //                   (EAllowedDOFs_Plane2D), hung by the same DistanceConstraint at a point 0.5 m off its
@@ -79,9 +79,11 @@ export function runJolt(J, run) {
   const plank = run.body === 'rotating_plank';
   const mass = plank ? 2 * m : m;
   const inertia = plank ? mass * kPlankOffset * kPlankOffset : m;
-  const centre = plank ? [kRestLength + run.x0, kPlankOffset, 0] : [run.x0, 0, 0];
-  const anchor1 = plank ? [0, 0, 0] : [-kRestLength, 0, 0];
-  const anchor2 = plank ? [kRestLength + run.x0, 0, 0] : [run.x0, 0, 0];
+  // The moving body sits near the origin (float positions keep their resolution as the motion decays); the
+  // fixed point is kRestLength behind the body's anchor.
+  const centre = plank ? [run.x0, kPlankOffset, 0] : [run.x0, 0, 0];
+  const anchor1 = [-kRestLength, 0, 0];
+  const anchor2 = [run.x0, 0, 0];
 
   const shape = new J.SphereShape(0.05, null);
   const cs = new J.BodyCreationSettings(shape, new J.RVec3(...centre), J.Quat.prototype.sIdentity(),

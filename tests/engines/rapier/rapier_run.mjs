@@ -6,7 +6,7 @@
 //                   the report's motor model (configureMotorModel). rapier2d and rapier3d.
 //   rotating_plank: a plank of mass 2 m_eff and inertia 2 m_eff 0.5^2, hung by a spring joint
 //                   (JointData.spring(rest length, stiffness, damping, anchor1, anchor2)) from a point on the
-//                   ground 1 m away along x, its anchor 0.5 m off its centre perpendicular to x, so the
+//                   ground 1 m behind it along x (the plank near the origin), its anchor 0.5 m off its centre perpendicular to x, so the
 //                   anchor's effective mass along x is m_eff and the plank turns as it swings (rapier2d).
 //                   A spring joint is a coupled linear motor that Rapier builds ForceBased
 //                   (spring_joint.rs SpringJoint::new); for AccelerationBased the motor model of its LinX axis
@@ -88,23 +88,24 @@ export function runRapier(run) {
   } else {
     if (run.dim === 3) throw new Error('rapier: the rotating plank runs in rapier2d');
     const mass = 2 * m, inertia = mass * kPlankOffset * kPlankOffset;
-    // The plank's centre sits kPlankOffset above its anchor; the anchor starts x0 past the rest length.
+    // The plank's centre sits kPlankOffset above its anchor, the anchor x0 past the rest length from the
+    // ground point (-kRestLength, 0): the body stays near the origin, where f32 positions keep resolution.
     const desc = R.RigidBodyDesc.dynamic()
-      .setTranslation(kRestLength + run.x0, kPlankOffset)
+      .setTranslation(run.x0, kPlankOffset)
       .setCanSleep(false)
       .setLinearDamping(linearDamping)
       .setAngularDamping(linearDamping)
       .setAdditionalSolverIterations(extra)
       .setAdditionalMassProperties(mass, { x: 0, y: 0 }, inertia);
     const body = world.createRigidBody(desc);
-    const data = R.JointData.spring(kRestLength, stiffness, damping, { x: 0, y: 0 }, { x: 0, y: -kPlankOffset });
+    const data = R.JointData.spring(kRestLength, stiffness, damping, { x: -kRestLength, y: 0 }, { x: 0, y: -kPlankOffset });
     const joint = world.createImpulseJoint(data, ground, body, true);
     world.impulseJoints.raw.jointConfigureMotorModel(joint.handle, R.JointAxis.LinX, model);
     // The anchor's distance from the ground point, minus the rest length: the spring's own coordinate.
     read = () => {
       const t = body.translation(), a = body.rotation();
       const ax = t.x + Math.sin(a) * kPlankOffset, ay = t.y - Math.cos(a) * kPlankOffset;
-      return Math.hypot(ax, ay) - kRestLength;
+      return Math.hypot(ax + kRestLength, ay) - kRestLength;
     };
   }
   trajectory.push(read());
