@@ -113,9 +113,11 @@ EngineReport report(const Target& t, const SettingValues& values) {
   const Step s = step_of(t, values);
   const int mode = static_cast<int>(values[kJoltSpringMode]);
   const double k = t.spring.stiffness, c = t.spring.damping;
-  const std::optional<Parameters> plain = parameters_of(mode, s.m, k, c);
+  std::optional<Parameters> plain = parameters_of(mode, s.m, k, c);
   const std::optional<Prediction> p = plain ? predict_spring(s, k, c) : std::nullopt;
-  out.parameters = plain ? *plain : *parameters_of(1, s.m, k, c);
+  // FrequencyAndDamping cannot type k <= 0 (mFrequency <= 0 is a hard limit): the refused spring is shown
+  // as stiffness and damping.
+  out.parameters = plain ? std::move(*plain) : *parameters_of(1, s.m, k, c);
   if (p) {
     out.predicted = *p;
     if (!p->stable) out.warnings.push_back({WarningCode::engine_unstable, p->spectral_radius, 1.0, kJoltModel.name});

@@ -120,23 +120,33 @@ EngineReport report(const Target& t, const SettingValues& values) {
   if (!(t.omega > 0.0)) return out;
 
   // Exact: softtune's exact spring at the substep h (closed form); where zeta near 0 needs c + h k <= 0, the
-  // least-damped spring the engine takes; with linear damping (not the default) the solver corrects both.
+  // least-damped spring the engine takes; with linear damping (not the default) the
+  // solver corrects what spreading it over the substeps misses.
   const ExactSpring closed = exact_spring(s.m, t.omega, t.damping_ratio, s.h);
   std::optional<soft_substeps::Spring> candidate;
   if (closed.finite && !closed.clamped_to_nyquist) {
-    candidate = soft_substeps::Spring{closed.spring.stiffness, closed.spring.damping};
+    // The step's damping scale, spread over the substeps as if each scaled by b^(1/n): exact for b = 1 (the
+    // default), a close start for the solver otherwise.
+    const double a = s.damping_scale == 1.0 ? 1.0 : std::pow(s.damping_scale, 1.0 / s.n);
+    candidate = soft_substeps::exact_scaled(s.m, closed.spring.stiffness, closed.spring.damping, s.h, a);
     if (!(candidate->c + s.h * candidate->k >= kRapierFloatMargin * s.h * candidate->k)) {
-      candidate = soft_substeps::least_damped(s.m, t.omega, s.h, 1.0, 2.0 * kRapierFloatMargin);
+      candidate = soft_substeps::least_damped(s.m, t.omega, s.h, a, 2.0 * kRapierFloatMargin);
     }
   }
   std::optional<Prediction> e = candidate ? predict_spring(s, candidate->k, candidate->c) : std::nullopt;
-  if (candidate && (!e || !meets(*e, t)) && s.damping_scale != 1.0) {
+  // The solver aims ten times inside the tolerance, as solve_response does.
+  const bool tight = e && e->frequency_hz && e->damping_ratio &&
+                     std::abs(frequency_error(*e, t)) <= 0.1 * kExactFrequencyTolerance &&
+                     std::abs(*e->damping_ratio - t.damping_ratio) <= 0.1 * kExactDampingTolerance;
+  if (candidate && !tight && s.damping_scale != 1.0) {
     const ResponseSolve solve = solve_response(
         [&](double k_try, double c_try) { return predict_spring(s, k_try, c_try); }, t.omega, t.damping_ratio,
         candidate->k, candidate->c);
-    candidate = soft_substeps::Spring{solve.p0, solve.p1};
-    e = solve.prediction;
-    if (!solve.met && !solve.prediction.frequency_hz) e.reset();
+    if (solve.met || !e || !meets(*e, t)) {  // keep a candidate that met over a solve that did not
+      candidate = soft_substeps::Spring{solve.p0, solve.p1};
+      e = solve.prediction;
+      if (!solve.met && !solve.prediction.frequency_hz) e.reset();
+    }
   }
   if (e && meets(*e, t)) {
     out.exact = parameters_of(s, candidate->k, candidate->c);

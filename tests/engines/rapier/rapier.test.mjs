@@ -36,7 +36,7 @@ function run(c, report, parameters, dt, steps) {
 // Engine settings cycle through the defaults (4 solver iterations, AccelerationBased) and the changes a user
 // makes: other iteration counts, ForceBased, more PGS iterations, extra body iterations, linear damping.
 const iterations = [4, 1, 2, 4, 8];
-const cases = grid(72, (i) => {
+const cases = grid(66, (i) => {
   const settings = { numSolverIterations: iterations[i % iterations.length] };
   if (i % 2 === 1) settings.motorModel = 'ForceBased';
   if (i % 7 === 3) settings.numInternalPgsIterations = 2;
@@ -49,8 +49,9 @@ const cases = grid(72, (i) => {
 
 test('Rapier runs what softtune predicts, and exact runs what was asked', () => {
   const started = Date.now();
-  // A Rapier world step costs about 0.3 ms under node here: runs stop at 400 steps (over 3 s of a 120 Hz step).
-  const { failures, table } = conform('rapier', cases, run, { maxSteps: 400 });
+  // A Rapier world step costs 0.1-0.2 ms under node here: runs stop at 300 steps (a part of the slowest
+  // periods, which Prony's fit reads exactly off Rapier's low-noise trajectory).
+  const { failures, table } = conform('rapier', cases, run, { maxSteps: 300 });
   console.log(table);
   console.log(`  ${((Date.now() - started) / 1000).toFixed(1)} s`);
   assert.deepEqual(failures, []);
