@@ -72,10 +72,12 @@ Step step_of(const Target& t, const SettingValues& values) {
 
 // What the engine does with (k, c): empty when it refuses them (k <= 0 is a hard limit, c + h k near 0
 // divides by zero in float, a value past float's range is infinity).
+bool legal(const Step& s, double k, double c) {
+  return k > 0.0 && c + s.h * k >= kJoltFloatMargin * s.h * k && k <= kFloatMax && std::abs(c) <= kFloatMax;
+}
+
 std::optional<Prediction> predict_spring(const Step& s, double k, double c) {
-  if (!(k > 0.0) || !(c + s.h * k >= kJoltFloatMargin * s.h * k) || k > kFloatMax || std::abs(c) > kFloatMax) {
-    return std::nullopt;
-  }
+  if (!legal(s, k, c)) return std::nullopt;
   return predict_from_step_map(soft_substeps::power(soft_substeps::substep_map(s.m, k, c, s.h, s.a), s.n), s.dt);
 }
 
@@ -134,13 +136,16 @@ EngineReport report(const Target& t, const SettingValues& values) {
   // engine takes at the asked frequency.
   const ExactSpring closed = exact_spring(s.m, t.omega, t.damping_ratio, s.h);
   std::optional<soft_substeps::Spring> candidate;
+  std::optional<Prediction> e;
   if (closed.finite && !closed.clamped_to_nyquist && s.a > 0.0) {
     candidate = soft_substeps::exact_scaled(s.m, closed.spring.stiffness, closed.spring.damping, s.h, s.a);
-    if (!(candidate->c + s.h * candidate->k >= kJoltFloatMargin * s.h * candidate->k)) {
+    if (legal(s, candidate->k, candidate->c)) {
+      e = soft_substeps::matched_prediction(t.omega, t.damping_ratio, s.dt);
+    } else {
       candidate = soft_substeps::least_damped(s.m, t.omega, s.h, s.a, 2.0 * kJoltFloatMargin);
+      if (candidate) e = predict_spring(s, candidate->k, candidate->c);
     }
   }
-  const std::optional<Prediction> e = candidate ? predict_spring(s, candidate->k, candidate->c) : std::nullopt;
   if (e && meets(*e, t)) {
     out.exact = parameters_of(mode, s.m, candidate->k, candidate->c);
     out.exact_predicted = *e;

@@ -73,12 +73,14 @@ Eigen::Matrix2d step_map(const Step& s, double k, double c) {
 }
 
 // What the engine does with the force-based (k, c): empty where it refuses them.
-std::optional<Prediction> predict_spring(const Step& s, double k, double c) {
+bool legal(const Step& s, double k, double c) {
   const double scale = s.acceleration ? 1.0 / s.m : 1.0;  // what is typed, which the engine holds in f32
-  if (!(k > 0.0) || !(c + s.h * k >= kRapierFloatMargin * s.h * k) || k * scale > kFloatMax ||
-      std::abs(c) * scale > kFloatMax) {
-    return std::nullopt;
-  }
+  return k > 0.0 && c + s.h * k >= kRapierFloatMargin * s.h * k && k * scale <= kFloatMax &&
+         std::abs(c) * scale <= kFloatMax;
+}
+
+std::optional<Prediction> predict_spring(const Step& s, double k, double c) {
+  if (!legal(s, k, c)) return std::nullopt;
   return predict_from_step_map(step_map(s, k, c), s.dt);
 }
 
@@ -129,11 +131,17 @@ EngineReport report(const Target& t, const SettingValues& values) {
     // default), a close start for the solver otherwise.
     const double a = s.damping_scale == 1.0 ? 1.0 : std::pow(s.damping_scale, 1.0 / s.n);
     candidate = soft_substeps::exact_scaled(s.m, closed.spring.stiffness, closed.spring.damping, s.h, a);
-    if (!(candidate->c + s.h * candidate->k >= kRapierFloatMargin * s.h * candidate->k)) {
+    if (!legal(s, candidate->k, candidate->c)) {
       candidate = soft_substeps::least_damped(s.m, t.omega, s.h, a, 2.0 * kRapierFloatMargin);
     }
   }
-  std::optional<Prediction> e = candidate ? predict_spring(s, candidate->k, candidate->c) : std::nullopt;
+  std::optional<Prediction> e;
+  if (candidate && s.damping_scale == 1.0 && legal(s, candidate->k, candidate->c) &&
+      candidate->k == closed.spring.stiffness) {
+    e = soft_substeps::matched_prediction(t.omega, t.damping_ratio, s.dt);  // the closed form, exact by construction
+  } else if (candidate) {
+    e = predict_spring(s, candidate->k, candidate->c);
+  }
   // The solver aims ten times inside the tolerance, as solve_response does.
   const bool tight = e && e->frequency_hz && e->damping_ratio &&
                      std::abs(frequency_error(*e, t)) <= 0.1 * kExactFrequencyTolerance &&

@@ -10,6 +10,9 @@
 
 #include <Eigen/Core>
 #include <cmath>
+
+#include "softtune/designer.h"
+#include "softtune/engines/engine_model.h"
 #include <numbers>
 #include <optional>
 
@@ -48,6 +51,15 @@ struct Spring {
 /// the a = 1 answer: k = a k', c = a c' - m (1 - a) / h.
 inline Spring exact_scaled(double m, double k_exact, double c_exact, double h, double a) {
   return {a * k_exact, a * c_exact - m * (1.0 - a) / h};
+}
+
+/// What a spring built by exact_scaled does, without computing its eigenvalues: its poles are exp(s h) per
+/// substep by construction (the model tests check this against the step map), so per step of dt they are
+/// exp(s dt): the asked omega and zeta, spectral radius exp(-omega (zeta - sqrt(zeta^2 - 1)) dt) for
+/// zeta > 1, else exp(-zeta omega dt).
+inline Prediction matched_prediction(double omega, double zeta, double dt) {
+  const double rate = zeta > 1.0 ? omega * (zeta - std::sqrt(zeta * zeta - 1.0)) : zeta * omega;
+  return {frequency_from_angular(omega), zeta, std::exp(-rate * dt), true};
 }
 
 /// The least-damped spring the engine takes, c + h k = margin h k, whose substep poles have natural

@@ -102,6 +102,14 @@ TEST(JoltModel, ExactIsTheExactSpringCorrectedForDamping) {
                   1e-9 * e.spring.stiffness * h);
       EXPECT_NEAR(*r.exact_predicted->frequency_hz, hz, 1e-9 * hz);
       EXPECT_NEAR(*r.exact_predicted->damping_ratio, zeta, 1e-9);
+      // The engine's own step with those numbers has the asked poles (exact_predicted is not computed
+      // from the map on this path).
+      const Prediction p = predict_from_step_map(
+          jolt_step_map(m, *parameter_value(*r.exact, "SpringSettings::mStiffness"),
+                        *parameter_value(*r.exact, "SpringSettings::mDamping"), dt, n, d), dt);
+      EXPECT_NEAR(*p.frequency_hz, hz, 1e-9 * hz);
+      EXPECT_NEAR(*p.damping_ratio, zeta, 1e-9);
+      EXPECT_NEAR(p.spectral_radius, r.exact_predicted->spectral_radius, 1e-12);
     }
   }
 }

@@ -128,6 +128,12 @@ TEST(RapierModel, ExactIsTheExactSpringAtTheSubstep) {
       EXPECT_NEAR(*parameter_value(*r.exact, "JointMotor::damping"), e.spring.damping, 1e-9 * std::abs(e.spring.damping) + 1e-12);
       EXPECT_NEAR(*r.exact_predicted->frequency_hz, hz, 1e-9 * hz);
       EXPECT_NEAR(*r.exact_predicted->damping_ratio, zeta, 1e-9);
+      const Prediction p = predict_from_step_map(
+          rapier_step_map(m, *parameter_value(*r.exact, "JointMotor::stiffness"),
+                          *parameter_value(*r.exact, "JointMotor::damping"), dt, n, 0.0), dt);
+      EXPECT_NEAR(*p.frequency_hz, hz, 1e-9 * hz);
+      EXPECT_NEAR(*p.damping_ratio, zeta, 1e-9);
+      EXPECT_NEAR(p.spectral_radius, r.exact_predicted->spectral_radius, 1e-12);
     }
   }
 }
