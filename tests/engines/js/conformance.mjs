@@ -27,13 +27,13 @@ function overDamped(frequencyHz, zeta, dt) {
 
 // Measures a trajectory against a response (f, zeta): {frequency (relative), damping (absolute)} for a
 // fittable pair of poles, {slowRate (relative)} where the fast pole is unobservable, or null.
-function measureAgainst(x, dt, frequencyHz, zeta) {
+function measureAgainst(x, dt, frequencyHz, zeta, floor) {
   const od = overDamped(frequencyHz, zeta, dt);
   if (od && od.fast < kUnobservablePole) {
-    const slow = fitSlowPole(x, dt, 2, kEngineFitFloor);
+    const slow = fitSlowPole(x, dt, 2, floor);
     return slow && { slowRate: slow.rate / od.slowRate - 1 };
   }
-  const fit = fitResponse(x, dt, kEngineFitFloor);
+  const fit = fitResponse(x, dt, floor);
   return fit && { frequency: fit.frequencyHz / frequencyHz - 1, damping: fit.dampingRatio - zeta,
                   measured: `${fit.frequencyHz} Hz zeta ${fit.dampingRatio}` };
 }
@@ -111,7 +111,7 @@ function hasWarning(report, code) {
  * Runs every case through `run(caseObject, report, parameters, dt, steps)` (returns the trajectory) and
  * returns {rows, failures, table}. A row per case: what was measured for the plain export and for exact.
  */
-export function conform(engineName, cases, run, { maxSteps = 3000 } = {}) {
+export function conform(engineName, cases, run, { maxSteps = 3000, fitFloor = () => kEngineFitFloor } = {}) {
   const rows = [];
   const failures = [];
   for (const c of cases) {
@@ -130,7 +130,7 @@ export function conform(engineName, cases, run, { maxSteps = 3000 } = {}) {
       const x = run(c, report, report.parameters, dt, steps);
       const m = report.predicted.spectral_radius < kDeadBeat
         ? { deadBeat: deadBeatHolds(x, report.predicted.spectral_radius) }
-        : measureAgainst(x, dt, report.predicted.frequency_hz, report.predicted.damping_ratio);
+        : measureAgainst(x, dt, report.predicted.frequency_hz, report.predicted.damping_ratio, fitFloor(c));
       if (!m) failures.push(`${label}: the plain run could not be fitted`);
       else {
         row.plain = m;
@@ -148,7 +148,7 @@ export function conform(engineName, cases, run, { maxSteps = 3000 } = {}) {
       const x = run(c, report, report.exact, dt, steps);
       const m = report.exact_predicted.spectral_radius < kDeadBeat
         ? { deadBeat: deadBeatHolds(x, report.exact_predicted.spectral_radius) }
-        : measureAgainst(x, dt, c.request.frequency_hz, c.request.damping_ratio);
+        : measureAgainst(x, dt, c.request.frequency_hz, c.request.damping_ratio, fitFloor(c));
       if (!m) failures.push(`${label}: the exact run could not be fitted`);
       else {
         row.exact = m;
