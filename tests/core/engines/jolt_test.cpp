@@ -198,3 +198,62 @@ TEST(JoltModel, DampingThatStopsTheBodyHasNoExact) {
 
 }  // namespace
 }  // namespace softtune::engines
+
+namespace softtune::engines {
+namespace {
+
+TEST(JoltModel, NoExportBreaksTheEnginesRulesOverASweep) {
+  // Every exact export keeps k > 0 and c + h k >= the float margin at the collision step, and meets the
+  // request; every plain export either is legal and predicted, or refused with the warning.
+  int exact_count = 0, refused = 0, inexact = 0;
+  for (double ratio : {0.001, 0.01, 0.1, 0.3}) {
+    for (double zeta : {0.0, 1e-4, 0.01, 0.3, 1.0, 2.0}) {
+      for (double m : {1e-3, 1.0, 1e3}) {
+        for (int n : {1, 2, 7}) {
+          for (double d : {0.0, 0.05, 3.0}) {
+            for (int mode : {0, 1, 2}) {
+              for (bool exact_mode : {false, true}) {
+                const double fps = 60.0, h = 1.0 / fps, hz = ratio * fps, omega = 2.0 * kPi * hz;
+                const SpringConstants s = exact_mode ? exact_spring(m, omega, zeta, h).spring : spring_constants(m, omega, zeta);
+                const EngineReport r = kJoltModel.report(target(hz, zeta, m, h, s), settings(n, d, mode));
+                if (!r.predicted.frequency_hz) {
+                  ++refused;
+                  EXPECT_EQ(r.warnings.front().code, WarningCode::engine_refuses);
+                }
+                if (!r.exact) {
+                  ++inexact;
+                  EXPECT_EQ(r.warnings.back().code, WarningCode::engine_inexact);
+                  continue;
+                }
+                ++exact_count;
+                const double hs = h / n;
+                double k = 0.0, c = 0.0;
+                if (mode == 0) {
+                  const double w = 2.0 * kPi * *parameter_value(*r.exact, "SpringSettings::mFrequency");
+                  k = m * w * w;
+                  c = 2.0 * m * *parameter_value(*r.exact, "SpringSettings::mDamping") * w;
+                } else {
+                  const double scale = mode == 2 ? m : 1.0;
+                  k = scale * *parameter_value(*r.exact, "SpringSettings::mStiffness");
+                  c = scale * *parameter_value(*r.exact, "SpringSettings::mDamping");
+                }
+                EXPECT_GT(k, 0.0);
+                EXPECT_GE(c + hs * k, kJoltFloatMargin * hs * k) << ratio << " " << zeta << " " << m << " " << n << " " << d;
+                const Prediction p = predict_from_step_map(jolt_step_map(m, k, c, h, n, d), h);
+                ASSERT_TRUE(p.frequency_hz && p.damping_ratio);
+                EXPECT_NEAR(*p.frequency_hz / hz, 1.0, kExactFrequencyTolerance);
+                EXPECT_NEAR(*p.damping_ratio, zeta, kExactDampingTolerance);
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(exact_count, 1000);
+  EXPECT_GT(refused, 0);
+  EXPECT_GT(inexact, 0);
+}
+
+}  // namespace
+}  // namespace softtune::engines

@@ -177,3 +177,50 @@ TEST(RapierModel, LinearDampingIsCompensatedBySolving) {
 
 }  // namespace
 }  // namespace softtune::engines
+
+namespace softtune::engines {
+namespace {
+
+TEST(RapierModel, NoExportBreaksTheEnginesRulesOverASweep) {
+  int exact_count = 0, refused = 0;
+  for (double ratio : {0.001, 0.01, 0.1, 0.3}) {
+    for (double zeta : {0.0, 1e-4, 0.01, 0.3, 1.0, 2.0}) {
+      for (double m : {1e-3, 1.0, 1e3}) {
+        for (int n : {1, 4, 9}) {
+          for (double d : {0.0, 0.2}) {
+            for (int model : {0, 1}) {
+              for (bool exact_mode : {false, true}) {
+                const double fps = 60.0, h = 1.0 / fps, hz = ratio * fps, omega = 2.0 * kPi * hz;
+                const SpringConstants s = exact_mode ? exact_spring(m, omega, zeta, h).spring : spring_constants(m, omega, zeta);
+                const EngineReport r = kRapierModel.report(target(hz, zeta, m, h, s), settings(n, model, d));
+                if (!r.predicted.frequency_hz) {
+                  ++refused;
+                  EXPECT_EQ(r.warnings.front().code, WarningCode::engine_refuses);
+                }
+                if (!r.exact) {
+                  EXPECT_EQ(r.warnings.back().code, WarningCode::engine_inexact);
+                  continue;
+                }
+                ++exact_count;
+                const double scale = model == 0 ? m : 1.0, hs = h / n;
+                const double k = scale * *parameter_value(*r.exact, "JointMotor::stiffness");
+                const double c = scale * *parameter_value(*r.exact, "JointMotor::damping");
+                EXPECT_GT(k, 0.0);
+                EXPECT_GE(c + hs * k, kRapierFloatMargin * hs * k) << ratio << " " << zeta << " " << m << " " << n;
+                const Prediction p = predict_from_step_map(rapier_step_map(m, k, c, h, n, d), h);
+                ASSERT_TRUE(p.frequency_hz && p.damping_ratio);
+                EXPECT_NEAR(*p.frequency_hz / hz, 1.0, kExactFrequencyTolerance);
+                EXPECT_NEAR(*p.damping_ratio, zeta, kExactDampingTolerance);
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(exact_count, 500);
+  EXPECT_GT(refused, 0);
+}
+
+}  // namespace
+}  // namespace softtune::engines
