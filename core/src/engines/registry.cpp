@@ -6,6 +6,8 @@
 #include "softtune/engines/engine_model.h"
 #include "softtune/engines/ode.h"
 #include "softtune/engines/physx.h"
+#include "softtune/engines/jolt.h"
+#include "softtune/engines/rapier.h"
 
 namespace softtune::engines {
 
@@ -15,6 +17,8 @@ std::span<const EngineModel* const> engine_models() {
       &kOdeModel,
       &kPhysxModel,
       &kBulletModel,
+      &kJoltModel,
+      &kRapierModel,
   };
   return kModels;
 }
