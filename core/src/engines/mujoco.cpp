@@ -130,14 +130,17 @@ MujocoGains euler_exact_gains(double omega, double zeta, double h) {
 std::complex<double> rk4_root(std::complex<double> sh) {
   const std::complex<double> z = std::exp(sh);
   std::complex<double> w = sh;
-  for (int i = 0; i < 40; ++i) {
-    const std::complex<double> t3 = 1.0 + w * (1.0 + w * (0.5 + w / 6.0));
-    const std::complex<double> t4 = 1.0 + w * (1.0 + w * (0.5 + w * (1.0 / 6.0 + w / 24.0)));
-    const std::complex<double> step = (t4 - z) / t3;
+  for (int i = 0; i < 30; ++i) {
+    const std::complex<double> t3 = 1.0 + w * (1.0 + w * (0.5 + w * (1.0 / 6.0)));
+    const std::complex<double> t4 = 1.0 + w * (1.0 + w * (0.5 + w * (1.0 / 6.0 + w * (1.0 / 24.0))));
+    // (t4 - z) / t3 without the library's scaled complex division
+    const std::complex<double> step = (t4 - z) * std::conj(t3) / std::norm(t3);
     w -= step;
-    if (std::abs(step) <= 1e-16 * std::max(1.0, std::abs(w))) break;
+    // Newton converges quadratically: once a step is 1e-13 of w, the next would be below rounding.
+    if (std::norm(step) <= 1e-26 * std::max(1.0, std::norm(w))) return w;
   }
-  return w;
+  // No root near s h: a real pole below T4's real minimum (0.27 at w = -1.6) has none.
+  return {std::numeric_limits<double>::quiet_NaN(), 0.0};
 }
 
 MujocoGains rk4_exact_gains(double omega, double zeta, double h) {
@@ -219,8 +222,9 @@ EngineReport report(const Target& t, const SettingValues& values) {
       out.exact_predicted = *p;
     } else {
       // Search the direct form (kappa, beta >= 0): beta < 0 would be a mixed solref.
-      const double guess_kappa = want.kappa > 0.0 && std::isfinite(want.kappa) ? want.kappa : t.omega * t.omega;
-      const double guess_beta = want.beta > 0.0 && std::isfinite(want.beta) ? want.beta : 0.0;
+      const bool usable = want.kappa > 0.0 && std::isfinite(want.kappa) && std::isfinite(want.beta);
+      const double guess_kappa = usable ? want.kappa : t.omega * t.omega;
+      const double guess_beta = usable ? std::max(0.0, want.beta) : 2.0 * t.damping_ratio * t.omega;
       const ResponseSolve solve = solve_response(
           [&](double kappa, double beta) -> std::optional<Prediction> {
             if (beta < 0.0) return std::nullopt;
@@ -235,8 +239,9 @@ EngineReport report(const Target& t, const SettingValues& values) {
       } else {
         out.warnings.push_back(
             {WarningCode::engine_inexact, solve.frequency_error, solve.damping_error, kMujocoModel.name,
-             rk4 ? "RK4 damps on its own: less damping needs a negative solref damping, which is a mixed "
-                   "solref MuJoCo replaces by its default; or the request is above the step's Nyquist rate"
+             rk4 ? "RK4 cannot reach it: below its own numerical damping it needs a negative solref damping (a "
+                   "mixed solref, replaced by the default), a decay faster than 0.27 per step has no RK4 "
+                   "root, or the request is above the step's Nyquist rate"
                  : "the request is above the step's Nyquist rate: no solref reaches it"});
       }
     }

@@ -180,6 +180,7 @@ TEST(MujocoConformance, RealEngineDoesWhatTheModelSays) {
       bool said = false;
       for (const Warning& w : report.warnings) said |= w.code == WarningCode::engine_inexact && w.engine == "mujoco";
       EXPECT_TRUE(said) << label;
+      std::printf("  exact null: %s\n", label.c_str());
       continue;
     }
     run.parameters = *report.exact;
@@ -202,6 +203,47 @@ TEST(MujocoConformance, RealEngineDoesWhatTheModelSays) {
   std::printf("  predicted unstable (and blew up): %d, exact null (engine_inexact): %d, "
               "plain exports MuJoCo replaces (engine_refuses): %d\n",
               unstable, inexact, replaced);
+}
+
+// MuJoCo's default solimp (0.9 0.95 0.001 0.5 2) is not flat: the impedance runs from solimp[0] at rest to
+// solimp[1] beyond `width`. Typed with the export's solref, the response is the model's (imp = solimp[1])
+// while the motion stays far outside the width, and the linearisation at imp = solimp[0] when it stays far
+// inside; near the width it is neither (printed, not asserted).
+TEST(MujocoConformance, DefaultSolimpHoldsTheModelInTwoRegimes) {
+  const std::size_t index = mujoco_index();
+  std::printf("\nMuJoCo default solimp 0.9 0.95 0.001 0.5 2 with the export's solref (5 Hz, 60 fps):\n");
+  for (double zeta : {0.0, 0.2, 0.5}) {
+    TuneRequest request;
+    request.frequency_hz = 5.0;
+    request.damping_ratio = zeta;
+    request.effective_mass = 1.0;
+    const TuneResult result = tune(request);
+    const EngineReport& report = result.engine_reports[index];
+    EngineRun run;
+    run.settings = default_settings(kMujocoModel);
+    run.dt = result.h;
+    run.parameters = report.parameters;
+    for (Parameter& p : run.parameters) {
+      if (p.name == "solimp[0]") p.value = 0.9;
+    }
+    const double s0 = *parameter_value(report.parameters, "solref[0]");
+    const double s1 = *parameter_value(report.parameters, "solref[1]");
+    const MujocoGains at_rest = mujoco_gains(s0, s1, 0.9, 0.95, result.h, true);
+    const Prediction inside = predict_from_step_map(
+        mujoco_step_map(MujocoIntegrator::euler, at_rest.beta, at_rest.kappa, result.h), result.h);
+    for (double x0 : {1e-4, 1e-3, 1e-1}) {
+      run.x0 = x0;
+      const Measured m = measure(kMujocoEngine.run(run), result.h);
+      ASSERT_TRUE(m.frequency_hz && m.damping_ratio);
+      const Prediction& want = x0 < 1e-3 ? inside : report.predicted;
+      std::printf("  zeta %.1f x0 %-6g measured %.4f Hz %.4f; flat model %.4f Hz %.4f, imp = solimp[0] %.4f Hz %.4f\n",
+                  zeta, x0, *m.frequency_hz, *m.damping_ratio, *report.predicted.frequency_hz,
+                  *report.predicted.damping_ratio, *inside.frequency_hz, *inside.damping_ratio);
+      if (x0 == 1e-3) continue;  // at the width itself the impedance changes within each swing
+      EXPECT_LT(std::abs(*m.frequency_hz / *want.frequency_hz - 1.0), 0.01) << zeta << " " << x0;
+      EXPECT_LT(std::abs(*m.damping_ratio - *want.damping_ratio), 0.02) << zeta << " " << x0;
+    }
+  }
 }
 
 }  // namespace
