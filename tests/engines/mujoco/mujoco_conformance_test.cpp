@@ -110,10 +110,11 @@ Measured measure(const RunTrajectory& x, double h) {
 struct Worst {
   int cases = 0;
   double frequency = 0.0, damping = 0.0;
-  void add(double f, double d) {
+  std::string frequency_case, damping_case;
+  void add(double f, double d, const std::string& label) {
     ++cases;
-    frequency = std::max(frequency, std::abs(f));
-    damping = std::max(damping, std::abs(d));
+    if (std::abs(f) > frequency) frequency = std::abs(f), frequency_case = label;
+    if (std::abs(d) > damping) damping = std::abs(d), damping_case = label;
   }
 };
 
@@ -167,7 +168,7 @@ TEST(MujocoConformance, RealEngineDoesWhatTheModelSays) {
       ASSERT_TRUE(fit.frequency_hz && fit.damping_ratio) << label;
       const double ef = *fit.frequency_hz / *report.predicted.frequency_hz - 1.0;
       const double ed = *fit.damping_ratio - *report.predicted.damping_ratio;
-      predicted.add(ef, ed);
+      predicted.add(ef, ed, label);
       EXPECT_LT(std::abs(ef), 0.01) << label << " measured " << *fit.frequency_hz << " predicted "
                                     << *report.predicted.frequency_hz;
       EXPECT_LT(std::abs(ed), 0.02) << label << " measured " << *fit.damping_ratio << " predicted "
@@ -190,7 +191,7 @@ TEST(MujocoConformance, RealEngineDoesWhatTheModelSays) {
     ASSERT_TRUE(fit.frequency_hz && fit.damping_ratio) << label;
     const double ef = *fit.frequency_hz / result.frequency_hz - 1.0;
     const double ed = *fit.damping_ratio - result.damping_ratio;
-    exact.add(ef, ed);
+    exact.add(ef, ed, label);
     EXPECT_LT(std::abs(ef), 0.01) << label << " measured " << *fit.frequency_hz << " asked " << result.frequency_hz;
     EXPECT_LT(std::abs(ed), 0.02) << label << " measured " << *fit.damping_ratio << " asked " << result.damping_ratio;
   }
@@ -203,6 +204,9 @@ TEST(MujocoConformance, RealEngineDoesWhatTheModelSays) {
   std::printf("  predicted unstable (and blew up): %d, exact null (engine_inexact): %d, "
               "plain exports MuJoCo replaces (engine_refuses): %d\n",
               unstable, inexact, replaced);
+  std::printf("  worst cases: predicted f %s; zeta %s\n               exact f %s; zeta %s\n",
+              predicted.frequency_case.c_str(), predicted.damping_case.c_str(), exact.frequency_case.c_str(),
+              exact.damping_case.c_str());
 }
 
 // MuJoCo's default solimp (0.9 0.95 0.001 0.5 2) is not flat: the impedance runs from solimp[0] at rest to
