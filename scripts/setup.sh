@@ -11,6 +11,7 @@ packages=(
   nlohmann-json3-dev                 # server: JSON codec
   libgtest-dev libbenchmark-dev      # tests, benchmarks
   libbox2d-dev                       # scene/ and engines/box2d_v2_4: Box2D 2.4
+  libmujoco-dev                      # engines/mujoco, tests/engines/mujoco: MuJoCo 2.2.2
   libosmesa6-dev libpng-dev          # render: off-screen frames, PNG
   libcpp-httplib-dev                 # server: HTTP
   chromium                           # browser tests
