@@ -181,7 +181,8 @@ EngineReport report(const Target& t, const SettingValues& values) {
       solref1 = zeta;
     }
   }
-  if (solref1 == 0.0) solref1 = 0.0;  // no "-0" in what to type
+  if (solref0 == 0.0) solref0 = 0.0;  // no "-0" in what to type
+  if (solref1 == 0.0) solref1 = 0.0;
   out.parameters = parameters_of(solref0, solref1, c);
   const MujocoGains plain = mujoco_gains(solref0, solref1, d, d, h, c.refsafe);
   out.predicted = predict_gains(plain, c, h);

@@ -250,6 +250,33 @@ TEST(MujocoModel, DirectExportOfAStiffDampedSpringIsUnstable) {
   expect_poles_match(*r.exact, MujocoIntegrator::euler, omega, 1.0, h);
 }
 
+TEST(MujocoModel, AnyFlatImpedanceGivesTheSameResponse) {
+  // K and B are divided by dmax = solimp[1], and the flat impedance is solimp[1]: the solref means the same
+  // spring whatever d_width the user keeps.
+  const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * kPi * 4.0, zeta = 0.3;
+  const Target t = target(4.0, zeta, m, h, spring_constants(m, omega, zeta));
+  const EngineReport base = kMujocoModel.report(t, settings());
+  for (double d : {0.0001, 0.5, 0.9999}) {
+    SettingValues v = settings();
+    v[kMujocoSolimp1] = d;
+    const EngineReport r = kMujocoModel.report(t, v);
+    EXPECT_EQ(*parameter_value(r.parameters, "solimp[0]"), d);
+    EXPECT_EQ(*parameter_value(r.parameters, "solimp[1]"), d);
+    EXPECT_NEAR(*r.predicted.frequency_hz, *base.predicted.frequency_hz, 1e-9);
+    EXPECT_NEAR(*r.predicted.damping_ratio, *base.predicted.damping_ratio, 1e-9);
+    ASSERT_TRUE(r.exact);
+    EXPECT_NEAR(*parameter_value(*r.exact, "solref[0]"), *parameter_value(*base.exact, "solref[0]"), 1e-12);
+  }
+}
+
+TEST(MujocoModel, NoSpringIsAZeroDirectSolref) {
+  const EngineReport r = kMujocoModel.report(target(0.0, 0.0, 1.0, 1.0 / 60.0, {0.0, 0.0}), settings());
+  EXPECT_FALSE(std::signbit(*parameter_value(r.parameters, "solref[0]")));
+  EXPECT_FALSE(std::signbit(*parameter_value(r.parameters, "solref[1]")));
+  EXPECT_FALSE(r.exact);
+  EXPECT_TRUE(r.warnings.empty());
+}
+
 TEST(MujocoModel, ExactNeverExportsWhatMujocoReplaces) {
   for (MujocoIntegrator i : {MujocoIntegrator::euler, MujocoIntegrator::rk4}) {
     for (double zeta : {0.0, 0.01, 0.5, 1.0, 2.0}) {
