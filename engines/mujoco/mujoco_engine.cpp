@@ -29,7 +29,9 @@ std::string setting_choice(const EngineRun& run, int index) {
 RunTrajectory run_mujoco(const EngineRun& run) {
   if (setting_choice(run, kMujocoIntegrator) == "implicitfast") return {};
   const std::string xml = mujoco_mjcf(run);
-  mju_user_warning = quiet_warning;
+  // Set once (thread-safe static initialisation): runs may go on concurrently (softtune verify).
+  static const bool quiet = (mju_user_warning = quiet_warning, true);
+  (void)quiet;
 
   auto vfs = std::make_unique<mjVFS>();
   mj_defaultVFS(vfs.get());
