@@ -20,10 +20,12 @@
 //     mj_RungeKutta      classic RK4, mj_forward at each stage (constraints rebuilt at each stage)
 //
 // The solver minimises 1/2 (qacc - qacc0)' M (qacc - qacc0) + 1/2 D (J qacc - aref)^2; for one row with
-// A = J M^-1 J' = diagApprox its constraint acceleration is
-//   J qacc = (J qacc0 + A D aref) / (1 + A D),  A D = imp / (1 - imp),  so  J qacc = imp aref + (1 - imp) J qacc0
-// (the docs' "a1 + d (b v + k r) = (1 - d) a0"). With no other force: a = -imp B v - imp^2 K r: a spring
-// per unit effective mass, independent of the mass. With a flat solimp at imp = dmax, standard solref
+// A = J M^-1 J' its constraint acceleration is
+//   J qacc = (J qacc0 + A D aref) / (1 + A D) = g aref + (1 - g) J qacc0,  A D = rho imp / (1 - imp),
+//   g = rho imp / (1 - imp + rho imp),  rho = A / diagApprox,
+// and for a joint or tendon equality rho = 1, g = imp (the docs' "a1 + d (b v + k r) = (1 - d) a0").
+// With no other force: a = -g B v - g imp K r: a spring per unit effective mass, independent of the mass.
+// (A connect or weld row has rho != 1 on an off-centre anchor: the diag_ratio setting carries it.) With a flat solimp at imp = dmax, standard solref
 // (timeconst, dampratio) is exactly omega = 1 / (timeconst dampratio), zeta = dampratio, and direct
 // (-k, -b) is exactly a = -b v - k r. The integrators then step it explicitly (the constraint force uses
 // r and v at the start of the step): Euler, implicit and implicitfast are the same semi-implicit Euler
@@ -55,12 +57,20 @@ constexpr std::array<SettingSpec, kMujocoSettingCount> kSettings = {{
     {"solimp[4]", 2, 1, kMax, false, {}, "", "power of the transition"},
     {"refsafe", 0, 0, 1, true, kRefsafeChoices, "",
      "mjDSBL_REFSAFE off (enable): standard timeconst raised to 2 timestep"},
+    {"diag_ratio", 1, 1e-6, 1e6, false, {}, "",
+     "J M^-1 J' / efc_diagApprox: 1 for a joint or tendon equality; connect/weld: 1/m_eff / body_invweight0"},
 }};
 
 struct Config {
   MujocoIntegrator integrator = MujocoIntegrator::euler;
   std::array<double, 5> solimp{};  // as exported: solimp[0] = solimp[1]
   bool refsafe = true;
+  double rho = 1.0;  // J M^-1 J' / efc_diagApprox
+  // g / d: the fraction of aref the solver realises over the impedance (1 when rho = 1)
+  double realised() const {
+    const double d = solimp[1];
+    return rho / (1.0 - d + rho * d);
+  }
 };
 
 Config config_of(const SettingValues& v) {
@@ -68,6 +78,7 @@ Config config_of(const SettingValues& v) {
   c.integrator = static_cast<MujocoIntegrator>(static_cast<int>(v[kMujocoIntegrator]));
   c.solimp = {v[kMujocoSolimp1], v[kMujocoSolimp1], v[kMujocoSolimp2], v[kMujocoSolimp3], v[kMujocoSolimp4]};
   c.refsafe = v[kMujocoRefsafe] == 0.0;
+  c.rho = v[kMujocoDiagRatio];
   return c;
 }
 
@@ -87,14 +98,15 @@ Prediction predict_gains(const MujocoGains& g, const Config& c, double h) {
 
 // The (solref[0], solref[1]) that make MuJoCo's gains (beta, kappa) at the flat impedance d = solimp[1]:
 // standard when there is damping and the 2h floor leaves the timeconst alone, else direct.
-// With imp = dmax the standard form gives beta = 2 / timeconst, kappa = 1 / (timeconst dampratio)^2 and the
-// direct form beta = -solref[1], kappa = -solref[0], whatever d is.
+// With imp = dmax the standard form gives beta = q 2 / timeconst, kappa = q / (timeconst dampratio)^2 and the
+// direct form beta = -q solref[1], kappa = -q solref[0], whatever d is (q = g / d, 1 when rho = 1).
 std::array<double, 2> solref_of(double beta, double kappa, const Config& c, double h) {
+  const double q = c.realised();
   if (beta > 0.0) {
-    const double timeconst = 2.0 / beta;
-    if (!c.refsafe || timeconst >= 2.0 * h) return {timeconst, 1.0 / (timeconst * std::sqrt(kappa))};
+    const double timeconst = 2.0 * q / beta;
+    if (!c.refsafe || timeconst >= 2.0 * h) return {timeconst, std::sqrt(q / kappa) / timeconst};
   }
-  return {-kappa, beta > 0.0 ? -beta : 0.0};
+  return {-kappa / q, beta > 0.0 ? -beta / q : 0.0};
 }
 
 // The poles of a continuous oscillator (omega, zeta) over h, as z = exp(s h): s1 and s2 (complex pair
@@ -184,7 +196,7 @@ EngineReport report(const Target& t, const SettingValues& values) {
   if (solref0 == 0.0) solref0 = 0.0;  // no "-0" in what to type
   if (solref1 == 0.0) solref1 = 0.0;
   out.parameters = parameters_of(solref0, solref1, c);
-  const MujocoGains plain = mujoco_gains(solref0, solref1, d, d, h, c.refsafe);
+  const MujocoGains plain = mujoco_gains(solref0, solref1, d, d, h, c.refsafe, c.rho);
   out.predicted = predict_gains(plain, c, h);
   if (plain.replaced_by_default) {
     out.warnings.push_back({WarningCode::engine_refuses, solref1, kMujocoDefaultTimeconst, kMujocoModel.name,
@@ -208,7 +220,7 @@ EngineReport report(const Target& t, const SettingValues& values) {
                                  : euler_exact_gains(t.omega, t.damping_ratio, h);
     auto predict_solref = [&](double s0, double s1) -> std::optional<Prediction> {
       if (!std::isfinite(s0) || !std::isfinite(s1)) return std::nullopt;
-      const MujocoGains g = mujoco_gains(s0, s1, d, d, h, c.refsafe);
+      const MujocoGains g = mujoco_gains(s0, s1, d, d, h, c.refsafe, c.rho);
       if (g.replaced_by_default || g.floored) return std::nullopt;
       return predict_gains(g, c, h);
     };
@@ -222,14 +234,14 @@ EngineReport report(const Target& t, const SettingValues& values) {
       out.exact = parameters_of(solref[0], solref[1], c);
       out.exact_predicted = *p;
     } else {
-      // Search the direct form (kappa, beta >= 0): beta < 0 would be a mixed solref.
+      // Search the gains (kappa, beta >= 0): beta < 0 would be a mixed solref; any other pair has a solref.
       const bool usable = want.kappa > 0.0 && std::isfinite(want.kappa) && std::isfinite(want.beta);
       const double guess_kappa = usable ? want.kappa : t.omega * t.omega;
       const double guess_beta = usable ? std::max(0.0, want.beta) : 2.0 * t.damping_ratio * t.omega;
       const ResponseSolve solve = solve_response(
           [&](double kappa, double beta) -> std::optional<Prediction> {
             if (beta < 0.0) return std::nullopt;
-            return predict_solref(-kappa, beta > 0.0 ? -beta : 0.0);
+            return predict_from_step_map(mujoco_step_map(c.integrator, beta, kappa, h), h);
           },
           t.omega, t.damping_ratio, guess_kappa, guess_beta);
       if (solve.met) {
@@ -252,7 +264,8 @@ EngineReport report(const Target& t, const SettingValues& values) {
 
 }  // namespace
 
-MujocoGains mujoco_gains(double solref0, double solref1, double imp, double d_width, double h, bool refsafe) {
+MujocoGains mujoco_gains(double solref0, double solref1, double imp, double d_width, double h, bool refsafe,
+                         double rho) {
   MujocoGains g;
   // getsolparam: "check reference format: standard or direct, cannot be mixed"
   if ((solref0 > 0.0) != (solref1 > 0.0)) {
@@ -272,9 +285,11 @@ MujocoGains mujoco_gains(double solref0, double solref1, double imp, double d_wi
                                : -solref0 / std::max(kMujocoMinVal, dmax * dmax);
   const double damping = solref1 > 0.0 ? 2.0 / std::max(kMujocoMinVal, dmax * solref0)
                                        : -solref1 / std::max(kMujocoMinVal, dmax);
-  // mj_referenceConstraint: aref = -B v - K imp r; the solver realises imp aref (see the top comment).
-  g.beta = imp * damping;
-  g.kappa = imp * imp * stiffness;
+  // mj_referenceConstraint: aref = -B v - K imp r; the solver realises g aref (see the top comment), g = imp
+  // when efc_diagApprox is the row's J M^-1 J'.
+  const double realised = rho * imp / (1.0 - imp + rho * imp);
+  g.beta = realised * damping;
+  g.kappa = realised * imp * stiffness;
   g.timeconst_used = solref0 > 0.0 ? solref0 : 0.0;
   return g;
 }

@@ -269,6 +269,35 @@ TEST(MujocoModel, AnyFlatImpedanceGivesTheSameResponse) {
   }
 }
 
+TEST(MujocoModel, DiagRatioIsTheSolversRealisedFraction) {
+  // One row: J a = (A D aref) / (1 + A D), D = imp / ((1 - imp) diagApprox), A = rho diagApprox.
+  const double h = 0.01, d = 0.95, rho = 3.0;
+  const MujocoGains g = mujoco_gains(-400.0, -3.0, d, d, h, true, rho);
+  const double ad = rho * d / (1.0 - d);
+  EXPECT_NEAR(g.beta, ad / (1.0 + ad) * 3.0 / d, 1e-12);
+  EXPECT_NEAR(g.kappa, ad / (1.0 + ad) * d * 400.0 / (d * d), 1e-9);
+  // The exact solref compensates it: the map MuJoCo steps has the request's poles.
+  const double m = 1.0, hz = 3.0, omega = 2.0 * kPi * hz, zeta = 0.2;
+  SettingValues v = settings();
+  v[kMujocoDiagRatio] = rho;
+  const EngineReport r = kMujocoModel.report(target(hz, zeta, m, h, spring_constants(m, omega, zeta)), v);
+  ASSERT_TRUE(r.exact);
+  const MujocoGains ge = mujoco_gains(*parameter_value(*r.exact, "solref[0]"), *parameter_value(*r.exact, "solref[1]"),
+                                      d, d, h, true, rho);
+  const MujocoGains want_e = mujoco_gains(*parameter_value(*kMujocoModel.report(
+                                              target(hz, zeta, m, h, spring_constants(m, omega, zeta)), settings()).exact,
+                                              "solref[0]"),
+                                          *parameter_value(*kMujocoModel.report(
+                                              target(hz, zeta, m, h, spring_constants(m, omega, zeta)), settings()).exact,
+                                              "solref[1]"),
+                                          d, d, h, true, 1.0);
+  EXPECT_NEAR(ge.beta, want_e.beta, 1e-9 * want_e.beta);
+  EXPECT_NEAR(ge.kappa, want_e.kappa, 1e-9 * want_e.kappa);
+  // And the plain export, typed as is, is stiffer than asked by g / d.
+  const EngineReport base = kMujocoModel.report(target(hz, zeta, m, h, spring_constants(m, omega, zeta)), settings());
+  EXPECT_GT(*r.predicted.frequency_hz, *base.predicted.frequency_hz);
+}
+
 TEST(MujocoModel, NoSpringIsAZeroDirectSolref) {
   const EngineReport r = kMujocoModel.report(target(0.0, 0.0, 1.0, 1.0 / 60.0, {0.0, 0.0}), settings());
   EXPECT_FALSE(std::signbit(*parameter_value(r.parameters, "solref[0]")));

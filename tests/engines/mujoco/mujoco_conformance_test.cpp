@@ -13,8 +13,12 @@
 #include <optional>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include <mujoco/mujoco.h>
 
 #include "mujoco_engine.h"
 #include "softtune/discrete_analysis.h"
@@ -248,6 +252,112 @@ TEST(MujocoConformance, DefaultSolimpHoldsTheModelInTwoRegimes) {
       EXPECT_LT(std::abs(*m.damping_ratio - *want.damping_ratio), 0.02) << zeta << " " << x0;
     }
   }
+}
+
+// A connect equality on the rotating plank (planar: slide x, slide y, hinge z): MuJoCo's diagonal for it is
+// body_invweight0 = (1/mass + 1/mass + 0) / 3, the anchor's 1/m_eff = 2/mass, so diag_ratio = 3. Told so, the
+// model predicts the plain export and its exact solref compensates; the runner does not build connect (it
+// builds the rows where the ratio is 1), so this test writes its own MJCF.
+RunTrajectory run_connect(const Parameters& p, double m_eff, double h, const std::string& integrator, int steps) {
+  const PlankGeometry g = rotating_plank(m_eff);
+  char xml[2000];
+  std::snprintf(xml, sizeof(xml),
+                "<mujoco><option timestep=\"%.17g\" gravity=\"0 0 0\" integrator=\"%s\"/><worldbody>"
+                "<body name=\"b\"><joint type=\"slide\" axis=\"1 0 0\"/><joint type=\"slide\" axis=\"0 1 0\"/>"
+                "<joint type=\"hinge\" axis=\"0 0 1\"/><inertial pos=\"0 0 0\" mass=\"%.17g\" "
+                "diaginertia=\"%.17g %.17g %.17g\"/></body></worldbody><equality><connect body1=\"b\" "
+                "anchor=\"0 %.17g 0\" solref=\"%.17g %.17g\" solimp=\"%.17g %.17g %.17g %.17g %.17g\"/>"
+                "</equality></mujoco>",
+                h, integrator.c_str(), g.mass, g.inertia, g.inertia, g.inertia, -g.offset,
+                *parameter_value(p, "solref[0]"), *parameter_value(p, "solref[1]"), *parameter_value(p, "solimp[0]"),
+                *parameter_value(p, "solimp[1]"), *parameter_value(p, "solimp[2]"), *parameter_value(p, "solimp[3]"),
+                *parameter_value(p, "solimp[4]"));
+  static const bool quiet = (mju_user_warning = [](const char*) {}, true);  // as kMujocoEngine does
+  (void)quiet;
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  const std::size_t size = std::strlen(xml);
+  mj_makeEmptyFileVFS(vfs.get(), "connect.xml", static_cast<int>(size));
+  std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), "connect.xml")], xml, size);
+  char error[500] = "";
+  mjModel* m = mj_loadXML("connect.xml", vfs.get(), error, sizeof(error));
+  mj_deleteVFS(vfs.get());
+  if (!m) return {};
+  mjData* d = mj_makeData(m);
+  d->qpos[0] = 1e-3;
+  RunTrajectory x;
+  auto anchor_x = [&] { return d->qpos[0] + g.offset * std::sin(d->qpos[2]); };
+  x.push_back(anchor_x());
+  for (int i = 0; i < steps; ++i) {
+    mj_step(m, d);
+    x.push_back(anchor_x());
+  }
+  mj_deleteData(d);
+  mj_deleteModel(m);
+  return x;
+}
+
+TEST(MujocoConformance, ConnectOnAnOffCentreAnchorWithItsDiagRatio) {
+  const std::size_t index = mujoco_index();
+  Worst predicted, exact, assumed_one;
+  for (double fps : {60.0, 120.0}) {
+    for (double zeta : {0.0, 0.2, 1.0}) {
+      for (double f_over_fps : {0.05, 0.2}) {
+        for (SoftMode mode : {SoftMode::standard, SoftMode::exact}) {
+          for (MujocoIntegrator integrator : {MujocoIntegrator::euler, MujocoIntegrator::rk4}) {
+            TuneRequest request;
+            request.fps = fps;
+            request.frequency_hz = f_over_fps * fps;
+            request.damping_ratio = zeta;
+            request.mode = mode;
+            request.effective_mass = 2.0;
+            SettingValues settings = default_settings(kMujocoModel);
+            settings[kMujocoIntegrator] = static_cast<double>(integrator);
+            settings[kMujocoDiagRatio] = 3.0;
+            request.engine_settings.resize(engine_models().size());
+            request.engine_settings[index] = settings;
+            const TuneResult result = tune(request);
+            const EngineReport& r = result.engine_reports[index];
+            const std::string name(kMujocoModel.settings[kMujocoIntegrator].choices[static_cast<int>(integrator)]);
+            const std::string label = name + " fps " + std::to_string(fps) + " zeta " + std::to_string(zeta) +
+                                      " f/fps " + std::to_string(f_over_fps) +
+                                      (mode == SoftMode::exact ? " exact" : " standard");
+            const int steps = std::clamp(static_cast<int>(4.0 / (result.frequency_hz * result.h)), 300, 6000);
+            if (r.predicted.stable && r.predicted.frequency_hz) {
+              const Measured m = measure(run_connect(r.parameters, 2.0, result.h, name, steps), result.h);
+              ASSERT_TRUE(m.frequency_hz && m.damping_ratio) << label;
+              predicted.add(*m.frequency_hz / *r.predicted.frequency_hz - 1.0,
+                            *m.damping_ratio - *r.predicted.damping_ratio, label);
+              // What the model would say with the ratio left at 1.
+              TuneRequest one = request;
+              one.engine_settings[index][kMujocoDiagRatio] = 1.0;
+              const EngineReport r1 = tune(one).engine_reports[index];
+              if (r1.predicted.frequency_hz) {
+                assumed_one.add(*m.frequency_hz / *r1.predicted.frequency_hz - 1.0,
+                                *m.damping_ratio - *r1.predicted.damping_ratio, label);
+              }
+            }
+            if (!r.exact) continue;
+            const Measured m = measure(run_connect(*r.exact, 2.0, result.h, name, steps), result.h);
+            ASSERT_TRUE(m.frequency_hz && m.damping_ratio) << label;
+            exact.add(*m.frequency_hz / result.frequency_hz - 1.0, *m.damping_ratio - result.damping_ratio, label);
+          }
+        }
+      }
+    }
+  }
+  std::printf("\nconnect on the rotating plank, diag_ratio 3, solimp[1] 0.95:\n");
+  std::printf("  parameters vs predicted: %d cases, worst %.4f%% / %.4f\n", predicted.cases, 100 * predicted.frequency,
+              predicted.damping);
+  std::printf("  exact vs request:        %d cases, worst %.4f%% / %.4f\n", exact.cases, 100 * exact.frequency,
+              exact.damping);
+  std::printf("  (predicted with diag_ratio 1: worst %.4f%% / %.4f)\n", 100 * assumed_one.frequency,
+              assumed_one.damping);
+  EXPECT_LT(predicted.frequency, 0.01) << predicted.frequency_case;
+  EXPECT_LT(predicted.damping, 0.02) << predicted.damping_case;
+  EXPECT_LT(exact.frequency, 0.01) << exact.frequency_case;
+  EXPECT_LT(exact.damping, 0.02) << exact.damping_case;
+  EXPECT_GE(exact.cases, 20);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@ enum MujocoSetting : int {
   kMujocoSolimp3,      ///< midpoint
   kMujocoSolimp4,      ///< power
   kMujocoRefsafe,      ///< 0 enable (MuJoCo's default), 1 disable (mjDSBL_REFSAFE)
+  kMujocoDiagRatio,    ///< rho = J M^-1 J' / efc_diagApprox of the row (1: joint or tendon equality)
   kMujocoSettingCount,
 };
 
@@ -32,10 +33,10 @@ inline constexpr double kMujocoMinImp = 0.0001, kMujocoMaxImp = 0.9999;
 /// mjMINVAL: the floor of every denominator in mj_makeImpedance.
 inline constexpr double kMujocoMinVal = 1e-15;
 
-/// The reference acceleration MuJoCo's solver realises for one 1-D equality whose efc_diagApprox is its
-/// exact J M^-1 J' (a joint or tendon equality): the constraint's acceleration is
-///   a = d a_ref + (1 - d) a0,  a_ref = -B v - K d r,
-/// so with a0 = 0, a = -beta v - kappa r with beta = d B, kappa = d^2 K (per unit effective mass).
+/// The reference acceleration MuJoCo's solver realises for one 1-D equality: the constraint's acceleration is
+///   a = g a_ref + (1 - g) a0,  a_ref = -B v - K d r,  g = rho d / (1 - d + rho d),
+/// rho = J M^-1 J' / efc_diagApprox (1 for a joint or tendon equality, where g = d), so with a0 = 0,
+/// a = -beta v - kappa r with beta = g B, kappa = g d K (per unit effective mass).
 struct MujocoGains {
   double beta = 0.0;   ///< 1/s
   double kappa = 0.0;  ///< 1/s^2
@@ -46,8 +47,9 @@ struct MujocoGains {
 
 /// getsolparam + mj_makeImpedance + mj_referenceConstraint for one row: solref as typed, the impedance
 /// `imp` (getimpedance's value; solimp[0] = solimp[1] = imp when flat), d_width = solimp[1], the
-/// timestep h, refsafe on or off.
-MujocoGains mujoco_gains(double solref0, double solref1, double imp, double d_width, double h, bool refsafe);
+/// timestep h, refsafe on or off, and rho = J M^-1 J' / efc_diagApprox.
+MujocoGains mujoco_gains(double solref0, double solref1, double imp, double d_width, double h, bool refsafe,
+                         double rho = 1.0);
 
 /// One mj_step of the state (r, v) under a = -beta v - kappa r: Euler, implicit and implicitfast are
 /// semi-implicit Euler (v1 = v0 + h a(r0, v0), r1 = r0 + h v1; the constraint force never enters the
