@@ -25,9 +25,9 @@
 //   g = rho imp / (1 - imp + rho imp),  rho = A / diagApprox,
 // and for a joint or tendon equality rho = 1, g = imp (the docs' "a1 + d (b v + k r) = (1 - d) a0").
 // With no other force: a = -g B v - g imp K r: a spring per unit effective mass, independent of the mass.
-// (A connect or weld row has rho != 1 on an off-centre anchor: the diag_ratio setting carries it.) With a flat solimp at imp = dmax, standard solref
-// (timeconst, dampratio) is exactly omega = 1 / (timeconst dampratio), zeta = dampratio, and direct
-// (-k, -b) is exactly a = -b v - k r. The integrators then step it explicitly (the constraint force uses
+// (A connect or weld row has rho != 1 on an off-centre anchor: the diag_ratio setting carries it.) With
+// rho = 1 and a flat solimp at imp = dmax, standard solref (timeconst, dampratio) is exactly
+// omega = 1 / (timeconst dampratio), zeta = dampratio, and direct (-k, -b) is exactly a = -b v - k r. The integrators then step it explicitly (the constraint force uses
 // r and v at the start of the step): Euler, implicit and implicitfast are the same semi-implicit Euler
 // map, RK4 is RK4; none is the implicit Euler softtune's own exact springs assume.
 #include "softtune/engines/mujoco.h"

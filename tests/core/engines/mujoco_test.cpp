@@ -280,21 +280,17 @@ TEST(MujocoModel, DiagRatioIsTheSolversRealisedFraction) {
   const double m = 1.0, hz = 3.0, omega = 2.0 * kPi * hz, zeta = 0.2;
   SettingValues v = settings();
   v[kMujocoDiagRatio] = rho;
-  const EngineReport r = kMujocoModel.report(target(hz, zeta, m, h, spring_constants(m, omega, zeta)), v);
-  ASSERT_TRUE(r.exact);
-  const MujocoGains ge = mujoco_gains(*parameter_value(*r.exact, "solref[0]"), *parameter_value(*r.exact, "solref[1]"),
-                                      d, d, h, true, rho);
-  const MujocoGains want_e = mujoco_gains(*parameter_value(*kMujocoModel.report(
-                                              target(hz, zeta, m, h, spring_constants(m, omega, zeta)), settings()).exact,
-                                              "solref[0]"),
-                                          *parameter_value(*kMujocoModel.report(
-                                              target(hz, zeta, m, h, spring_constants(m, omega, zeta)), settings()).exact,
-                                              "solref[1]"),
-                                          d, d, h, true, 1.0);
+  const Target t = target(hz, zeta, m, h, spring_constants(m, omega, zeta));
+  const EngineReport r = kMujocoModel.report(t, v), base = kMujocoModel.report(t, settings());
+  ASSERT_TRUE(r.exact && base.exact);
+  auto gains_of = [&](const Parameters& p, double ratio) {
+    return mujoco_gains(*parameter_value(p, "solref[0]"), *parameter_value(p, "solref[1]"), d, d, h, true, ratio);
+  };
+  // The same gains (and so the same motion) as the exact solref of a row whose diagonal is exact.
+  const MujocoGains ge = gains_of(*r.exact, rho), want_e = gains_of(*base.exact, 1.0);
   EXPECT_NEAR(ge.beta, want_e.beta, 1e-9 * want_e.beta);
   EXPECT_NEAR(ge.kappa, want_e.kappa, 1e-9 * want_e.kappa);
   // And the plain export, typed as is, is stiffer than asked by g / d.
-  const EngineReport base = kMujocoModel.report(target(hz, zeta, m, h, spring_constants(m, omega, zeta)), settings());
   EXPECT_GT(*r.predicted.frequency_hz, *base.predicted.frequency_hz);
 }
 
