@@ -12,6 +12,8 @@
 // three axes) as the approximate diagonal, not the anchor's effective mass; a joint limit only pushes.
 // Gravity is off; the model's timestep is the run's dt and each sample is one mj_step.
 
+#include <string>
+
 #include "softtune/engines/engine_run.h"
 
 namespace softtune::engines {
