@@ -2,6 +2,7 @@
 #include <array>
 
 #include "bullet_engine.h"
+#include "mujoco_engine.h"
 #include "ode_engine.h"
 #include "softtune/engines/verify.h"
 
@@ -11,6 +12,7 @@ std::span<const RealEngine* const> real_engines() {
   static constexpr std::array kEngines = {
       &kOdeEngine,
       &kBulletEngine,
+      &kMujocoEngine,
   };
   return kEngines;
 }

@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev      # tests, benchmarks
   libbox2d-dev                       # scene/ and engines/box2d_v2_4: Box2D 2.4
   libode-dev                         # engines/ode: ODE 0.16 conformance
+  libmujoco-dev                      # engines/mujoco, tests/engines/mujoco: MuJoCo 2.2.2
   libosmesa6-dev libpng-dev          # render: off-screen frames, PNG
   libcpp-httplib-dev                 # server: HTTP
   chromium                           # browser tests

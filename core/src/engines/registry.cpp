@@ -3,6 +3,7 @@
 
 #include "softtune/engines/box2d_v2_4.h"
 #include "softtune/engines/bullet.h"
+#include "softtune/engines/mujoco.h"
 #include "softtune/engines/engine_model.h"
 #include "softtune/engines/ode.h"
 #include "softtune/engines/physx.h"
@@ -19,6 +20,7 @@ std::span<const EngineModel* const> engine_models() {
       &kBulletModel,
       &kJoltModel,
       &kRapierModel,
+      &kMujocoModel,
   };
   return kModels;
 }
