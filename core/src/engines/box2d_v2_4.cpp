@@ -12,7 +12,10 @@
 // With one joint the velocity iterations converge in the first one (the second adds zero impulse whatever
 // was warm-started), and SolvePositionConstraints returns at once for a spring (minLength < maxLength), so
 // one world step is the talk's soft step: exactly implicit Euler on (m, k, d). Where d + h k = 0 the engine
-// sets m_gamma = 0 and the joint turns rigid, so an exact-mode spring at zeta = 0 cannot be typed.
+// sets m_gamma = 0 and the joint turns rigid, so an exact-mode spring at zeta = 0 cannot be typed: `exact`
+// is then softtune's exact spring at zeta = kExactDampingTolerance / 2, within the tolerance (closed form).
+// The mouse joint also multiplies the body's angular velocity by 0.98 in InitVelocityConstraints: on a body
+// that turns (rotationShare > 0) that is a third state, modelled by box2d_v2_4_mouse_step_map.
 #include "softtune/engines/box2d_v2_4.h"
 
 #include <Eigen/Eigenvalues>
@@ -138,6 +141,18 @@ bool meets(const Prediction& p, const Target& t) {
          std::abs(*p.damping_ratio - t.damping_ratio) <= kExactDampingTolerance;
 }
 
+// softtune's exact spring at zeta' = kExactDampingTolerance / 2 when less was asked: its poles differ from
+// the request's by less than the tolerance, and its d + h k stays clear of the engine's zero.
+std::optional<ExactSpring> nearly_undamped(const Target& t, const Setup& s) {
+  const double zeta = 0.5 * kExactDampingTolerance;
+  if (!(t.damping_ratio >= 0.0 && t.damping_ratio < zeta)) return std::nullopt;
+  const ExactSpring e = exact_spring(s.m, t.omega, zeta, s.h);
+  if (!e.finite || e.clamped_to_nyquist) return std::nullopt;
+  const std::optional<Prediction> p = predict_spring(s, e.spring.stiffness, e.spring.damping);
+  if (!p || !meets(*p, t)) return std::nullopt;
+  return e;
+}
+
 EngineReport report(const Target& t, const SettingValues& values) {
   EngineReport out;
   out.settings = describe_settings(kBox2DV24Model, values);
@@ -194,6 +209,11 @@ EngineReport report(const Target& t, const SettingValues& values) {
     } else if (closed.finite && !closed.clamped_to_nyquist && p && meets(*p, t)) {
       out.exact = parameters_of(s, closed.spring.stiffness, closed.spring.damping);
       out.exact_predicted = *p;
+    } else if (const std::optional<ExactSpring> near = nearly_undamped(t, s)) {
+      // Asked (nearly) undamped: the exact spring at half the damping tolerance, which the engine takes
+      // (d + h k = m (1 - P) / (P h) > 0), in closed form instead of the solver.
+      out.exact = parameters_of(s, near->spring.stiffness, near->spring.damping);
+      out.exact_predicted = predict_spring(s, near->spring.stiffness, near->spring.damping);
     } else {
       SpringConstants guess = spring_constants(m, t.omega, t.damping_ratio);
       if (closed.finite && closed.spring.damping + h * closed.spring.stiffness > 0.0) guess = closed.spring;

@@ -184,8 +184,8 @@ TEST(Box2DV3Model, StepMapIsTheLiteralSolverLoop) {
         const std::vector<double> mod = model_run(hz, zeta, dt, n, true, x0, 240);
         double worst = 0.0;
         for (std::size_t i = 0; i < lit.size(); ++i) worst = std::max(worst, std::abs(lit[i] - mod[i]));
-        // float: positions near 1 m carry ~6e-8 m, the 10 mm swing ~1e-5 relative per step.
-        EXPECT_LT(worst, 2e-3 * x0) << "n " << n << " zeta " << zeta << " hz " << hz;
+        // float: positions near 1 m carry ~6e-8 m; measured worst 8e-5 of x0 (0.7 Hz, 240 frames).
+        EXPECT_LT(worst, 3e-4 * x0) << "n " << n << " zeta " << zeta << " hz " << hz;
       }
     }
   }

@@ -90,7 +90,7 @@ TuneRequest request_of(const Case& c) {
 struct Measured {
   double frequency_hz = 0.0, damping_ratio = 0.0;
   bool ok = false;
-  double trajectory_error = 0.0;  // max |x_engine - x_model| / x0 over the first 100 steps
+  double trajectory_error = 0.0;  // max |x_engine - x_model| / x0 over the first two periods
 };
 
 double parameter(const Parameters& p, const char* suffix) {
@@ -128,7 +128,8 @@ int steps_for(double hz, double zeta, double dt) {
   return std::clamp(static_cast<int>(seconds / dt), 120, 5000);
 }
 
-Measured measure(const Case& c, const Parameters& parameters, const SettingValues& settings, double dt, int steps) {
+Measured measure(const Case& c, const Parameters& parameters, const SettingValues& settings, double dt, int steps,
+                 double hz) {
   EngineRun run;
   run.effective_mass = c.mass;
   run.parameters = parameters;
@@ -146,10 +147,17 @@ Measured measure(const Case& c, const Parameters& parameters, const SettingValue
     m = {*fit.frequency_hz, *fit.damping_ratio, true};
   }
   const std::vector<double> model = model_trajectory(c, parameters, dt, steps, run.x0);
-  // The first 100 samples: later, an undamped run's phase carries float's drift (the fit above holds it).
-  for (std::size_t i = 0; i < x.size() && i <= 100; ++i) m.trajectory_error = std::max(m.trajectory_error, std::abs(x[i] - model[i]) / run.x0);
+  // Two periods (at most 100 samples): later, an undamped plank's phase carries its geometric nonlinearity
+  // (a frequency shift of ~theta^2 / 8, 5e-5 at 0.02 rad) and float's drift; the fit holds the response.
+  const std::size_t window = static_cast<std::size_t>(std::clamp(2.0 / (hz * dt), 20.0, 100.0));
+  for (std::size_t i = 0; i < x.size() && i <= window; ++i) m.trajectory_error = std::max(m.trajectory_error, std::abs(x[i] - model[i]) / run.x0);
   return m;
 }
+
+// Sample by sample against the model's step map: float for the point; the plank's geometry (its anchor
+// turning through ~0.02 rad, the wheel's perpendicular row correcting the anchor's second-order drift) is
+// linear only to second order, a few 1e-3 of x0 over two undamped periods.
+double trajectory_tolerance(const Case& c) { return c.body == RunBody::rotating_plank ? 1e-2 : 2e-3; }
 
 bool has_note(const Warnings& w) {
   return std::any_of(w.begin(), w.end(), [&](const Warning& x) { return x.code == WarningCode::engine_note && x.engine == "box2d_v2_4"; });
@@ -175,7 +183,7 @@ TEST(Box2DV24Conformance, RealEngineMeetsTheModel) {
   Worst predicted, exact;
   std::array<Worst, 3> by_joint_pred{}, by_joint_exact{};
   int refused = 0, inexact = 0, unfittable = 0, not_second_order = 0;
-  double worst_trajectory = 0.0;
+  std::array<double, 2> worst_trajectory{};  // point, plank
   for (const Case& c : cases) {
     SCOPED_TRACE(describe(c));
     const TuneResult result = tune(request_of(c));
@@ -185,10 +193,10 @@ TEST(Box2DV24Conformance, RealEngineMeetsTheModel) {
     SettingValues settings = request_of(c).engine_settings[model_index()];
 
     if (r.predicted.frequency_hz && r.predicted.damping_ratio) {
-      const Measured m = measure(c, r.parameters, settings, dt, steps_for(*r.predicted.frequency_hz, *r.predicted.damping_ratio, dt));
-      // Sample by sample, the engine follows the model's step map (float: ~1e-6 of x0 per step).
-      EXPECT_LE(m.trajectory_error, 2e-3) << "parameters: trajectory off the model's";
-      worst_trajectory = std::max(worst_trajectory, m.trajectory_error);
+      const Measured m = measure(c, r.parameters, settings, dt, steps_for(*r.predicted.frequency_hz, *r.predicted.damping_ratio, dt),
+                                *r.predicted.frequency_hz);
+      EXPECT_LE(m.trajectory_error, trajectory_tolerance(c)) << "parameters: trajectory off the model's";
+      worst_trajectory[c.body == RunBody::rotating_plank] = std::max(worst_trajectory[c.body == RunBody::rotating_plank], m.trajectory_error);
       const bool third_mode = has_note(r.warnings);
       if (!m.ok) {
         // Only a response gone within 8 steps is too fast to fit.
@@ -210,13 +218,10 @@ TEST(Box2DV24Conformance, RealEngineMeetsTheModel) {
 
     if (r.exact) {
       ASSERT_TRUE(r.exact_predicted);
-      const Measured m = measure(c, *r.exact, settings, dt, steps_for(asked, c.zeta, dt));
-      // Near zeta = 0 the exact spring's d + h k is a few 1e-4 of h k, which float computes to ~1e-3: there
-      // the step map in double drifts from the engine's (the fit above still holds the response).
-      const double k = parameter(*r.exact, "::stiffness"), d = parameter(*r.exact, "::damping");
-      const double tolerance = d + dt * k < 1e-2 * dt * k ? 0.1 : 2e-3;
+      const Measured m = measure(c, *r.exact, settings, dt, steps_for(asked, c.zeta, dt), asked);
+      const double tolerance = trajectory_tolerance(c);
       EXPECT_LE(m.trajectory_error, tolerance) << "exact: trajectory off the model's";
-      worst_trajectory = std::max(worst_trajectory, m.trajectory_error);
+      worst_trajectory[c.body == RunBody::rotating_plank] = std::max(worst_trajectory[c.body == RunBody::rotating_plank], m.trajectory_error);
       if (!m.ok) {
         EXPECT_LT(std::pow(r.exact_predicted->spectral_radius, 8), 1e-2) << "exact: the fit failed";
         ++unfittable;
@@ -234,8 +239,8 @@ TEST(Box2DV24Conformance, RealEngineMeetsTheModel) {
   }
   std::printf("\nBox2D 2.4.1 conformance: %zu cases; %d plain exports refused, %d without exact (engine_inexact), "
               "%d runs too fast to fit, %d plain runs with a third mode (mouse joint, rotating plank);\n"
-              "worst trajectory error against the model's step map %.2e of x0\n",
-              cases.size(), refused, inexact, unfittable, not_second_order, worst_trajectory);
+              "worst trajectory error against the model's step map over two periods: point %.2e, plank %.2e of x0\n",
+              cases.size(), refused, inexact, unfittable, not_second_order, worst_trajectory[0], worst_trajectory[1]);
   std::printf("%-10s %6s %14s %14s %6s %14s %14s\n", "joint", "runs", "pred |df/f|", "pred |dzeta|", "exact",
               "req |df/f|", "req |dzeta|");
   for (int j = 0; j < 3; ++j) {
