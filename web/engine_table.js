@@ -36,6 +36,13 @@ function valueList(values) {
     typeof v === 'string' ? el('code', { textContent: v }) : number(v))));
 }
 
+/// A difference with its sign and three decimals, rounded first so round-off reads +0.000, not -0.000.
+export function formatDifference(d) {
+  if (d === null || d === undefined) return '—';
+  const shown = Math.round(d * 1000) / 1000 || 0;
+  return `${shown < 0 ? '−' : '+'}${Math.abs(shown).toFixed(3)}`;
+}
+
 function errorClass(p, small, big) {
   if (p === null) return '';
   return Math.abs(p) < small ? 'err-small' : Math.abs(p) > big ? 'err-big' : '';
@@ -58,7 +65,7 @@ function prediction(e, which, prefix) {
     el('div', {}, number(v.predicted.frequency_hz, `${prefix}-frequency`), ' Hz ',
       el('span', { className: errorClass(v.frequencyError, 2, 10), textContent: formatPercent(v.frequencyError) })),
     el('div', {}, 'ζ ', number(v.predicted.damping_ratio, `${prefix}-damping`), ' ',
-      el('span', { className: errorClass(df === null ? null : 100 * df, 1, 5), textContent: df === null ? '—' : `${df >= 0 ? '+' : '−'}${fmt(Math.abs(df))}` })));
+      el('span', { className: errorClass(df === null ? null : 100 * df, 1, 5), textContent: formatDifference(df) })));
   return box;
 }
 
@@ -98,14 +105,14 @@ function rows(root, key) {
   const pre = el('pre', { dataset: { testid: 'snippet' } });
   pre.textContent = code();
   const head = el('th', { scope: 'row', title: e?.model ?? '' }, el('span', { className: 'engine-name', textContent: label }),
-    modelled ? settingsLine(e) : el('small', { className: 'note', textContent: 'not modelled yet' }));
+    modelled ? settingsLine(e) : null);
   const cells = modelled
     ? [valueList(e.parameters), prediction(e, 'plain', 'predicted'), exactCell(e)]
-    : [valueList(Object.fromEntries(legacyFields(e))), el('span', { className: 'muted', textContent: 'not modelled yet' }),
-      el('span', { className: 'muted', textContent: '—' })];
+    : [valueList(Object.fromEntries(legacyFields(e))),
+      el('span', { className: 'muted', textContent: 'not modelled yet: these are softtune\'s own numbers, not a prediction of this engine\'s step' })];
   const labels = ['what to type', 'predicted', 'exact values'];
-  const main = el('tr', { dataset: { engine: key }, className: 'engine' }, head,
-    ...cells.map((c, i) => el('td', { dataset: { label: labels[i] } }, c)),
+  const main = el('tr', { dataset: { engine: key }, className: modelled ? 'engine' : 'engine legacy' }, head,
+    ...cells.map((c, i) => el('td', { dataset: { label: labels[i] }, ...(modelled || i === 0 ? {} : { colSpan: 2 }) }, c)),
     el('td', { className: 'copy' }, copyButton(label, code)));
   const snippet = el('tr', { className: 'snippet', dataset: { engine: key } },
     el('td', { colSpan: 5 }, el('details', {}, el('summary', { textContent: `${label} code` }), pre)));
@@ -117,7 +124,8 @@ export function showEngines(root, tune) {
   shown = tune;
   const req = tune.requested ?? {};
   root.querySelector('#engines-note').textContent =
-    `Asked for ${fmt(req.frequency_hz)} Hz with damping ratio ${fmt(req.damping_ratio)}. Predicted: what each engine's own step does with the values to type; exact: the values that make it do what was asked.`;
+    `Predicted: what each engine's own step does with the values to type, against the request (error in percent for the frequency, difference for the damping ratio ζ). Exact: the values that make the engine do what was asked.`;
+  root.querySelector('#engines-asked').textContent = `asked ${fmt(req.frequency_hz)} Hz, ζ ${fmt(req.damping_ratio)}`;
   root.querySelector('#engines tbody').replaceChildren(...engineKeys(tune).flatMap((key) => rows(root, key)));
 }
 
