@@ -3,7 +3,7 @@
 // follow whatever engines the answer carries; one with a model (engines.<name>.parameters) shows its
 // report, one without shows its older fields. web/engines.js builds every text; this file only draws.
 import {
-  ENGINE_LABELS, engineKeys, engineSnippet, isModelled, legacyFields, notesFor, shortName, verdict,
+  ENGINE_LABELS, engineKeys, engineSnippet, engineWarnings, isModelled, legacyFields, notesFor, shortName, verdict,
 } from './engines.js';
 import { copyText, fmt, formatPercent } from './results.js';
 
@@ -114,8 +114,14 @@ function rows(root, key) {
   const main = el('tr', { dataset: { engine: key }, className: modelled ? 'engine' : 'engine legacy' }, head,
     ...cells.map((c, i) => el('td', { dataset: { label: labels[i] }, ...(modelled || i === 0 ? {} : { colSpan: 2 }) }, c)),
     el('td', { className: 'copy' }, copyButton(label, code)));
+  // The engine's warnings that no cell above shows (those explain a "blows up" or "cannot").
+  const seen = new Set([...main.querySelectorAll('.note')].map((p) => p.textContent));
+  const rest = engineWarnings(shown, key).filter((w) => !seen.has(w.message));
   const snippet = el('tr', { className: 'snippet', dataset: { engine: key } },
-    el('td', { colSpan: 5 }, el('details', {}, el('summary', { textContent: `${label} code` }), pre)));
+    el('td', { colSpan: 5 },
+      rest.length ? el('ul', { className: 'warnings' }, ...rest.map((w) => el('li', { textContent: w.message, dataset: { code: w.code ?? '' } }))) : null,
+      el('details', {}, el('summary', { textContent: `${label} code` }),
+        e?.model ? el('p', { className: 'note', textContent: `Modelled from ${e.model}.` }) : null, pre)));
   snippet.redraw = () => { pre.textContent = code(); };
   return [main, snippet];
 }

@@ -305,6 +305,12 @@ export function describeVerdict(v) {
 
 const EXACT_WARNING = /exact|inexact|cannot|unrepresent/;
 
+/// Every warning about engine `key`: its report's own and the answer's top-level ones naming it, once each.
+export function engineWarnings(tune, key) {
+  const all = [...(tune.engines?.[key]?.warnings ?? []), ...(tune.warnings ?? []).filter((w) => w && w.engine === key)];
+  return all.filter((w, i) => w && w.message && all.findIndex((x) => x && x.message === w.message) === i);
+}
+
 /// The warning messages that explain one set of values: those about exactness for 'exact', the others
 /// for 'plain'; every warning of the engine when none matches.
 export function notesFor(e, which) {

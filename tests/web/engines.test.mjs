@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  decimal, engineKeys, engineSnippet, legacyFields, legacySnippet, notesFor, shortName, verdict,
+  decimal, engineKeys, engineSnippet, engineWarnings, legacyFields, legacySnippet, notesFor, shortName, verdict,
 } from '../../web/engines.js';
 
 const requested = { frequency_hz: 5, damping_ratio: 0.5 };
@@ -242,6 +242,11 @@ test('notes: exactness warnings explain the exact values, the others the plain o
   assert.deepEqual(notesFor(e, 'exact'), ['b']);
   assert.deepEqual(notesFor(e, 'plain'), ['a']);
   assert.deepEqual(notesFor({ warnings: [{ code: 'engine_refuses', message: 'a' }] }, 'exact'), ['a']);
+  // An engine's warnings: its report's and the answer's top-level ones naming it, each once.
+  const tune = { engines: { jolt: e }, warnings: [{ code: 'engine_note', engine: 'jolt', message: 'c' }, { code: 'x', engine: 'jolt', message: 'a' },
+    { code: 'frequency_error', message: 'd' }, { code: 'engine_note', engine: 'mujoco', message: 'e' }] };
+  assert.deepEqual(engineWarnings(tune, 'jolt').map((w) => w.message), ['a', 'b', 'c']);
+  assert.deepEqual(engineWarnings(tune, 'mujoco').map((w) => w.message), ['e']);
 });
 
 test('engines without a model show their older fields; a null one is a comment; ODE / Bullet goes once both are modelled', () => {
