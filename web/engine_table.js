@@ -3,7 +3,8 @@
 // follow whatever engines the answer carries; one with a model (engines.<name>.parameters) shows its
 // report, one without shows its older fields. web/engines.js builds every text; this file only draws.
 import {
-  ENGINE_LABELS, engineKeys, engineSnippet, engineWarnings, isModelled, legacyFields, notesFor, shortName, verdict,
+  ENGINE_LABELS, engineKeys, engineSnippet, engineWarnings, formatDifference, isModelled, legacyFields, notesFor, shortName,
+  verdict,
 } from './engines.js';
 import { copyText, fmt, formatPercent } from './results.js';
 
@@ -34,13 +35,6 @@ function valueList(values) {
   return el('ul', { className: 'values' }, ...entries.map(([name, v]) => el('li', {},
     el('code', { title: name, textContent: shortName(name) }), ' = ',
     typeof v === 'string' ? el('code', { textContent: v }) : number(v))));
-}
-
-/// A difference with its sign and three decimals, rounded first so round-off reads +0.000, not -0.000.
-export function formatDifference(d) {
-  if (d === null || d === undefined) return '—';
-  const shown = Math.round(d * 1000) / 1000 || 0;
-  return `${shown < 0 ? '−' : '+'}${Math.abs(shown).toFixed(3)}`;
 }
 
 function errorClass(p, small, big) {

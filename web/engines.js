@@ -295,6 +295,13 @@ export function verdict(predicted, requested) {
   return { state, frequencyError, dampingError, predicted };
 }
 
+/// A difference with its sign and three decimals, rounded first so round-off reads +0.000, not -0.000.
+export function formatDifference(d) {
+  if (d === null || d === undefined) return '—';
+  const shown = Math.round(d * 1000) / 1000 || 0;
+  return `${shown < 0 ? '−' : '+'}${Math.abs(shown).toFixed(3)}`;
+}
+
 export function describeVerdict(v) {
   const p = v.predicted;
   if (v.state === 'none') return 'no prediction';

@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  decimal, engineKeys, engineSnippet, engineWarnings, legacyFields, legacySnippet, notesFor, shortName, verdict,
+  decimal, engineKeys, engineSnippet, engineWarnings, formatDifference, legacyFields, legacySnippet, notesFor, shortName, verdict,
 } from '../../web/engines.js';
 
 const requested = { frequency_hz: 5, damping_ratio: 0.5 };
@@ -273,4 +273,8 @@ test('literals and short names', () => {
   assert.equal(decimal(1e-7), '1e-7');
   assert.equal(shortName('btGeneric6DofSpring2Constraint::setParam(BT_CONSTRAINT_STOP_ERP)'), 'setParam(BT_CONSTRAINT_STOP_ERP)');
   assert.equal(shortName('solref[0]'), 'solref[0]');
+  assert.equal(formatDifference(2.220446049250313e-16), '+0.000');
+  assert.equal(formatDifference(-0.0004), '+0.000');
+  assert.equal(formatDifference(-0.1476), '−0.148');
+  assert.equal(formatDifference(null), '—');
 });

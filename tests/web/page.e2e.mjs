@@ -1,6 +1,7 @@
 // The designer page end to end in real headless Chromium against a real `softtune serve`: the numbers
 // shown equal the API's, moving the frames slider and the oscillation choice updates numbers, plots and
-// preview, a shared URL restores the tuning, an API error shows next to its field, no console errors, and
+// preview, the engine table shows each engine's prediction and copies its code, a shared URL restores the
+// tuning, an API error shows next to its field, no console errors, and
 // screenshots at 1280x800 and on a narrow window.
 //
 // Run (ctest does this as web.e2e): SOFTTUNE_BIN=build/softtune SOFTTUNE_WEB=web \
