@@ -258,7 +258,8 @@ export function isModelled(e) {
 }
 
 /// The snippet to paste for engine `key`: `which` = 'exact' (the values that make the engine do what was
-/// asked) or 'plain' (the engine's field names for softtune's k, c). Null when the engine has no syntax here.
+/// asked) or 'plain' (the engine's field names for softtune's k, c). An engine without a model gets its
+/// older fields' snippet (legacySnippet), one the page has no syntax for its JSON.
 export function engineSnippet(key, e, tune, which) {
   const syntax = ENGINE_SYNTAX[key];
   if (!syntax || !isModelled(e)) return legacySnippet(key, e);
