@@ -1,7 +1,7 @@
 #pragma once
 // The simulate / presets / check contracts (shared by `softtune simulate`, `softtune check` and
 // POST /api/v1/simulate, GET /api/v1/presets[/{name}]): JSON <-> softtune::scene types.
-// Field list: README.md, "Scenes and presets".
+// Field list: docs/scenes.md.
 
 #include <nlohmann/json.hpp>
 #include <string>
