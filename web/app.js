@@ -262,7 +262,7 @@ async function runAccuracy(request) {
   }
 }
 
-/// The preview contract (README, "Preview frames"): a Box2D preset by name, or the 1-D oscillator with the
+/// The preview contract (docs/preview.md): a Box2D preset by name, or the 1-D oscillator with the
 /// tuning fields of `softtune tune` (a custom body, or the oscillator preset) and the effective mass the
 /// tune answer computed (from the mass or the 2-D constraint). `wait: false` answers at once, so the
 /// progress bar can follow the render.
