@@ -1,8 +1,14 @@
 // The full tune (designer mapping, softness in every form, exact poles, discrete analysis of all five
 // integrators, engine export) against a bare k, c, gamma, beta computation in the same run.
-// Target (issue 2): full tune median under 1 us, aim 300 ns.
+// Target (issue 2): full tune median under 1 us, aim 300 ns. Issue 15: the engine models (every
+// engines.<name> report) add at most 2 us: BM_EngineReports* time them alone, per engine and all together,
+// for the same target the full tune builds, so the tune without them is the difference.
 #include <benchmark/benchmark.h>
 
+#include <string>
+#include <vector>
+
+#include "softtune/engines/engine_model.h"
 #include "softtune/tune.h"
 
 namespace {
@@ -52,6 +58,44 @@ void BM_FullTuneConstraint(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(softtune::tune(r));
 }
 BENCHMARK(BM_FullTuneConstraint);
+
+// The target tune() hands the models, from a tune of the same request.
+softtune::engines::Target target_of(const softtune::TuneRequest& r) {
+  const softtune::TuneResult t = softtune::tune(r);
+  softtune::engines::Target target;
+  target.effective_mass = t.effective_mass;
+  target.omega = t.omega;
+  target.damping_ratio = t.damping_ratio;
+  target.dt = t.h;
+  target.spring = t.spring;
+  return target;
+}
+
+void engine_reports(benchmark::State& state, softtune::SoftMode mode, double zeta) {
+  softtune::TuneRequest r = request(mode);
+  r.oscillation.reset();
+  r.damping_ratio = zeta;
+  const softtune::engines::Target target = target_of(r);
+  const auto models = softtune::engines::engine_models();
+  std::vector<softtune::engines::SettingValues> defaults;
+  for (const auto* m : models) defaults.push_back(softtune::engines::default_settings(*m));
+  const int only = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < models.size(); ++i) {
+      if (only >= 0 && static_cast<int>(i) != only) continue;
+      benchmark::DoNotOptimize(models[i]->report(target, defaults[i]));
+    }
+  }
+  if (only >= 0) state.SetLabel(std::string(models[static_cast<std::size_t>(only)]->name));
+}
+
+void BM_EngineReportsExact(benchmark::State& state) { engine_reports(state, softtune::SoftMode::exact, 0.5); }
+void BM_EngineReportsStandard(benchmark::State& state) { engine_reports(state, softtune::SoftMode::standard, 0.5); }
+void BM_EngineReportsUndamped(benchmark::State& state) { engine_reports(state, softtune::SoftMode::exact, 0.0); }
+// -1: all models together; 0..7: one engine each (the label names it).
+BENCHMARK(BM_EngineReportsExact)->DenseRange(-1, 7);
+BENCHMARK(BM_EngineReportsStandard)->Arg(-1);
+BENCHMARK(BM_EngineReportsUndamped)->Arg(-1);
 
 }  // namespace
 

@@ -4,8 +4,30 @@
 
 namespace softtune::app {
 
+namespace {
+
+// A request that gives an effective mass and asks for the rotating plank describes the plank itself, so
+// the models see the body the engine runs (Bullet's spring divides by the body's mass, not m_eff): a
+// static ground and the plank of engine_run.h, anchored `offset` off its centre, across the axis.
+void describe_plank(TuneRequest& q) {
+  if (!q.effective_mass) return;
+  const engines::PlankGeometry plank = engines::rotating_plank(*q.effective_mass);
+  Constraint2D c;
+  c.body_a.is_static = true;
+  c.body_b.mass = plank.mass;
+  c.body_b.inertia = plank.inertia;
+  c.anchor_a = {0.0, plank.offset};
+  c.anchor_b = {0.0, plank.offset};
+  c.axis = {1.0, 0.0};
+  q.effective_mass.reset();
+  q.constraint = c;
+}
+
+}  // namespace
+
 nlohmann::json run_verify(const nlohmann::json& request) {
-  const codec::VerifyRequest q = codec::decode_verify_request(request);
+  codec::VerifyRequest q = codec::decode_verify_request(request);
+  if (q.options.body == engines::RunBody::rotating_plank) describe_plank(q.tune);
   const TuneResult tuned = tune(q.tune);
   std::vector<engines::EngineVerification> runs;
   runs.reserve(q.engines.size());

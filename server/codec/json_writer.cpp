@@ -24,4 +24,26 @@ nlohmann::json stages_json(const StageList& stages) {
   return out;
 }
 
+nlohmann::json engine_values_json(const engines::Parameters& values) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const engines::Parameter& p : values) {
+    nlohmann::json& v = out[std::string(p.name)];
+    if (p.choice.empty()) {
+      v = number_or_null(p.value);
+    } else if (p.choice == "true" || p.choice == "false") {
+      v = p.choice == "true";  // a switch reads back as the boolean a request gives
+    } else {
+      v = p.choice;
+    }
+  }
+  return out;
+}
+
+nlohmann::json engine_prediction_json(const engines::Prediction& p) {
+  return {{"frequency_hz", number_or_null(p.frequency_hz)},
+          {"damping_ratio", number_or_null(p.damping_ratio)},
+          {"spectral_radius", number_or_null(p.spectral_radius)},
+          {"stable", p.stable}};
+}
+
 }  // namespace softtune::codec

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "softtune/engines/engine_model.h"
 #include "softtune/tune.h"
 #include "softtune/warnings.h"
 
@@ -18,5 +19,11 @@ nlohmann::json warnings_json(const Warnings& warnings);
 
 /// ["validate", "designer_mapping", ...]
 nlohmann::json stages_json(const StageList& stages);
+
+/// An engine's settings or parameters: {name: number, choice name, or true/false for a switch}.
+nlohmann::json engine_values_json(const engines::Parameters& values);
+
+/// {frequency_hz, damping_ratio, spectral_radius, stable} of an engine model's prediction.
+nlohmann::json engine_prediction_json(const engines::Prediction& p);
 
 }  // namespace softtune::codec

@@ -147,6 +147,15 @@ std::vector<engines::SettingValues> read_engine_settings(ObjectReader& r) {
     for (std::size_t i = 0; i < model.settings.size(); ++i) {
       const engines::SettingSpec& spec = model.settings[i];
       if (!spec.choices.empty()) {
+        // A switch (choices "false", "true") takes a JSON boolean, as the engine's own API does.
+        const bool is_switch = spec.choices.size() == 2 && spec.choices[0] == "false" && spec.choices[1] == "true";
+        if (is_switch) {
+          const json* raw = s.raw(spec.name);
+          if (!raw) continue;
+          if (!raw->is_boolean()) throw invalid_field(s.field(spec.name), "must be true or false");
+          values[i] = raw->get<bool>() ? 1.0 : 0.0;
+          continue;
+        }
         const std::vector<std::string_view> choices(spec.choices.begin(), spec.choices.end());
         if (auto c = s.choice(spec.name, choices)) values[i] = static_cast<double>(*c);
         continue;
@@ -224,21 +233,6 @@ json analysis_json(const DiscreteAnalysis& a) {
   };
 }
 
-json parameters_json(const engines::Parameters& parameters) {
-  json out = json::object();
-  for (const engines::Parameter& p : parameters) {
-    out[std::string(p.name)] = p.choice.empty() ? number_or_null(p.value) : json(p.choice);
-  }
-  return out;
-}
-
-json prediction_json(const engines::Prediction& p) {
-  return {{"frequency_hz", number_or_null(p.frequency_hz)},
-          {"damping_ratio", number_or_null(p.damping_ratio)},
-          {"spectral_radius", number_or_null(p.spectral_radius)},
-          {"stable", p.stable}};
-}
-
 // Each modelled engine's report joins that engine's object (SPEC.md 5): what was assumed, what to type,
 // what the engine does with it, and what to type so it does what was asked.
 void add_engine_reports(json& engines_out, const std::vector<engines::EngineReport>& reports) {
@@ -247,11 +241,11 @@ void add_engine_reports(json& engines_out, const std::vector<engines::EngineRepo
     const engines::EngineReport& r = reports[i];
     json& e = engines_out[std::string(models[i]->name)];
     e["model"] = models[i]->modelled;
-    e["settings"] = parameters_json(r.settings);
-    e["parameters"] = parameters_json(r.parameters);
-    e["predicted"] = prediction_json(r.predicted);
-    e["exact"] = r.exact ? parameters_json(*r.exact) : json();
-    e["exact_predicted"] = r.exact_predicted ? prediction_json(*r.exact_predicted) : json();
+    e["settings"] = engine_values_json(r.settings);
+    e["parameters"] = engine_values_json(r.parameters);
+    e["predicted"] = engine_prediction_json(r.predicted);
+    e["exact"] = r.exact ? engine_values_json(*r.exact) : json();
+    e["exact_predicted"] = r.exact_predicted ? engine_prediction_json(*r.exact_predicted) : json();
     e["warnings"] = warnings_json(r.warnings);
   }
 }

@@ -50,21 +50,6 @@ json measured_json(const engines::Measured& m) {
           {"finite", m.finite}};
 }
 
-json prediction_json(const engines::Prediction& p) {
-  return {{"frequency_hz", number_or_null(p.frequency_hz)},
-          {"damping_ratio", number_or_null(p.damping_ratio)},
-          {"spectral_radius", number_or_null(p.spectral_radius)},
-          {"stable", p.stable}};
-}
-
-json parameters_json(const engines::Parameters& parameters) {
-  json out = json::object();
-  for (const engines::Parameter& p : parameters) {
-    out[std::string(p.name)] = p.choice.empty() ? number_or_null(p.value) : json(p.choice);
-  }
-  return out;
-}
-
 // Relative frequency error and absolute damping-ratio error of a measurement against a reference.
 json errors_json(const engines::Measured& m, std::optional<double> frequency_hz, std::optional<double> zeta) {
   const bool f = m.frequency_hz && frequency_hz && *frequency_hz > 0.0;
@@ -117,18 +102,18 @@ json encode_verify_result(const VerifyRequest& q, const TuneResult& tuned,
     json e = {
         {"version", v.engine->version},
         {"model", engines::engine_models()[index]->modelled},
-        {"settings", parameters_json(report.settings)},
-        {"parameters", parameters_json(report.parameters)},
-        {"predicted", prediction_json(report.predicted)},
+        {"settings", engine_values_json(report.settings)},
+        {"parameters", engine_values_json(report.parameters)},
+        {"predicted", engine_prediction_json(report.predicted)},
         {"measured", measured_json(v.measured)},
         {"measured_vs_predicted", errors_json(v.measured, report.predicted.frequency_hz, report.predicted.damping_ratio)},
         {"measured_vs_requested", errors_json(v.measured, tuned.frequency_hz, asked_zeta)},
         {"trajectory", trajectory_json(v.trajectory, tuned.h)},
-        {"exact", report.exact ? parameters_json(*report.exact) : json()},
+        {"exact", report.exact ? engine_values_json(*report.exact) : json()},
         {"warnings", warnings_json(report.warnings)},
     };
     if (v.exact_measured && report.exact_predicted) {
-      e["exact_predicted"] = prediction_json(*report.exact_predicted);
+      e["exact_predicted"] = engine_prediction_json(*report.exact_predicted);
       e["exact_measured"] = measured_json(*v.exact_measured);
       e["exact_measured_vs_requested"] = errors_json(*v.exact_measured, tuned.frequency_hz, asked_zeta);
       e["exact_trajectory"] = trajectory_json(*v.exact_trajectory, tuned.h);

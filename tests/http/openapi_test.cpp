@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "app/accuracy_app.h"
+#include "app/verify_app.h"
 #include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
 #include "codec/problem.h"
@@ -181,6 +182,7 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
       {"/api/v1/simulate", [&](const json& q) { return softtune::app::run_simulate(q, presets); }},
       {"/api/v1/accuracy", [](const json& q) { return softtune::app::run_accuracy(q); }},
       {"/api/v1/stability", [](const json& q) { return softtune::app::run_stability(q); }},
+      {"/api/v1/verify", [](const json& q) { return softtune::app::run_verify(q); }},
   };
   for (const auto& [path, contract] : contracts) {
     const json& body = openapi_document()["paths"][path]["post"]["requestBody"]["content"]["application/json"];

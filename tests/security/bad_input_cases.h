@@ -15,7 +15,7 @@
 namespace softtune::security {
 
 struct Case {
-  std::string route;  ///< tune | simulate | accuracy | stability | preview | presets
+  std::string route;  ///< tune | simulate | accuracy | stability | preview | verify | presets
   std::string name;   ///< what was done, for the failure message
   std::string body;   ///< the request body (for presets: the preset name)
   std::optional<std::string> field;  ///< the field a refusal must name; nullopt: any (whole-body cases)
@@ -183,6 +183,17 @@ inline std::vector<Case> all_cases(const std::string& presets_dir) {
   out.push_back({"tune", "effective_mass and constraint together",
                  json{{"frequency_hz", 5}, {"damping_ratio", 0.1}, {"effective_mass", 1}, {"constraint", tune_2d["constraint"]}}.dump(),
                  std::nullopt, true});
+
+  // Engine settings are checked against each engine model's specs (core/engines).
+  route("tune", json::parse(R"({"frequency_hz": 4, "damping_ratio": 0.2, "effective_mass": 2,
+      "engine_settings": {"box2d_v3": {"subStepCount": 4, "enableWarmStarting": true}, "mujoco": {"integrator": "Euler"}}})"));
+
+  const json verify = json::parse(R"({"frequency_hz": 5, "damping_ratio": 0.1, "effective_mass": 2, "mode": "exact",
+      "engines": ["box2d_v2_4", "ode"], "duration_s": 1, "body": "rotating_plank", "x0": 0.01,
+      "engine_settings": {"ode": {"stepper": "dWorldQuickStep"}}})");
+  route("verify", verify);
+  whole_body(out, "verify", verify, "duration_s", R"({"frequency_hz": 5, "damping_ratio": 0.1, "effective_mass": 1,
+      "fps": 1000, "substeps": 100, "duration_s": 60, "engines": ["ode"]})");
 
   json scene = json::parse(read_text(presets_dir + "/oscillator.json"));
   scene.erase("expectations");
