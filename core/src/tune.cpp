@@ -178,7 +178,7 @@ TuneResult tune(const TuneRequest& r) {
   for (std::size_t i = 0; i < models.size(); ++i) {
     const bool given = i < r.engine_settings.size() && !r.engine_settings[i].empty();
     out.engine_reports.push_back(
-        models[i]->report(target, given ? r.engine_settings[i] : engines::default_settings(*models[i])));
+        models[i]->report(target, given ? r.engine_settings[i] : engines::default_settings_of(*models[i])));
   }
   return out;
 }

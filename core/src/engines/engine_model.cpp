@@ -11,6 +11,21 @@
 
 namespace softtune::engines {
 
+const SettingValues& default_settings_of(const EngineModel& model) {
+  // Built once per model, so a tune with the defaults allocates none.
+  static const std::vector<SettingValues> all = [] {
+    std::vector<SettingValues> out;
+    for (const EngineModel* m : engine_models()) out.push_back(default_settings(*m));
+    return out;
+  }();
+  const auto models = engine_models();
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    if (models[i] == &model) return all[i];
+  }
+  static const SettingValues none;
+  return none;
+}
+
 SettingValues default_settings(const EngineModel& model) {
   SettingValues values;
   values.reserve(model.settings.size());
@@ -76,9 +91,11 @@ Prediction predict_from_step_map(const Eigen::Matrix2d& step_map, double dt) {
   if (!step_map.allFinite()) return unstable_prediction();
   std::complex<double> z1, z2;
   eigenvalues_2x2(step_map, z1, z2);
-  if (std::abs(z2) > std::abs(z1)) std::swap(z1, z2);
+  // |z| squared: std::abs(complex) goes through hypot, a tenth of a model's whole report.
+  const double r1 = std::norm(z1), r2 = std::norm(z2);
+  if (r2 > r1) std::swap(z1, z2);
   if (z1.imag() < 0.0) std::swap(z1, z2);  // a conjugate pair: either order reads the same oscillation
-  return prediction_of_poles(z1, z2, std::max(std::abs(z1), std::abs(z2)), dt);
+  return prediction_of_poles(z1, z2, std::sqrt(std::max(r1, r2)), dt);
 }
 
 Prediction predict_from_step_map(const Eigen::MatrixXd& step_map, double dt) {

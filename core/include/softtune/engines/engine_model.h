@@ -94,6 +94,9 @@ const EngineModel* find_engine_model(std::string_view name);
 /// The defaults of a model's settings.
 SettingValues default_settings(const EngineModel& model);
 
+/// The same for a registered model, built once (empty for a model not in engine_models()).
+const SettingValues& default_settings_of(const EngineModel& model);
+
 /// The settings as the report lists them (choices by name).
 Parameters describe_settings(const EngineModel& model, const SettingValues& values);
 
