@@ -13,6 +13,7 @@ packages=(
   libbox2d-dev                       # scene/ and engines/box2d_v2_4: Box2D 2.4
   libosmesa6-dev libpng-dev          # render: off-screen frames, PNG
   libcpp-httplib-dev                 # server: HTTP
+  libssl-dev                         # render: SHA-256 of preview names (OpenSSL libcrypto, EVP)
   chromium                           # browser tests
   wrk                                # bench: HTTP load
   clang-14 libclang-rt-14-dev python3  # security: libFuzzer harnesses, attack suite
