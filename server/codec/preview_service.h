@@ -48,7 +48,7 @@ class PreviewService {
   std::optional<std::string> frame_png(const std::string& id, int n);
   std::optional<std::string> filmstrip_png(const std::string& id);
 
-  render::CacheStats cache_stats() const { return pipeline_.cache_stats(); }
+  support::LruStats cache_stats() const { return pipeline_.cache_stats(); }
 
  private:
   nlohmann::json answer(const render::PreviewJob& job, const std::string& url_prefix) const;

@@ -19,9 +19,9 @@
 
 #include "softtune/render/draw_model.h"
 #include "softtune/render/filmstrip.h"
-#include "softtune/render/lru_cache.h"
 #include "softtune/render/png.h"
 #include "softtune/render/renderer.h"
+#include "softtune/support/lru_cache.h"
 #include "softtune/tune.h"
 #include "softtune/validation.h"
 
@@ -134,7 +134,7 @@ class FramePipeline {
   /// The job in flight or the cached result by id (progress), or nullptr.
   std::shared_ptr<PreviewJob> find(const std::string& id);
 
-  CacheStats cache_stats() const { return cache_.stats(); }
+  support::LruStats cache_stats() const { return cache_.stats(); }
   int workers() const { return static_cast<int>(threads_.size()); }
 
  private:
@@ -147,7 +147,7 @@ class FramePipeline {
   void finish(JobState& job);
 
   PipelineOptions options_;
-  LruCache<Preview> cache_;
+  support::LruCache<std::string, Preview> cache_;  ///< by id, weighed by Preview::bytes()
   std::mutex jobs_mutex_;
   std::map<std::string, std::shared_ptr<JobState>> in_flight_;
   std::mutex queue_mutex_;
