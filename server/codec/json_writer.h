@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "softtune/tune.h"
+#include "softtune/diagnostics.h"
 #include "softtune/warnings.h"
 
 namespace softtune::codec {
