@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "app/accuracy_app.h"
 #include "codec/accuracy_codec.h"
 #include "codec/json_reader.h"
 #include "codec/preset_loader.h"
@@ -77,7 +78,7 @@ inline void simulate_request(std::string_view text) {
 
 /// An accuracy request: decode -> work-precision report -> encode.
 inline void accuracy_request(std::string_view text) {
-  expecting_problems([&] { check_answer(codec::run_accuracy(codec::parse_json(text))); });
+  expecting_problems([&] { check_answer(app::run_accuracy(codec::parse_json(text))); });
 }
 
 /// A preset file as load_preset reads it (strict parse, the directory's schema), then decoded to a scene.

@@ -75,6 +75,14 @@ nlohmann::json read_request_file(const std::string& path) {
 
 void print_json(const nlohmann::json& doc) { std::cout << doc.dump(2) << '\n'; }
 
+void print_answer(const app::Answer& answer) {
+  if (answer.format == app::Format::json) {
+    print_json(answer.json);
+  } else {
+    std::cout << answer.text;
+  }
+}
+
 int guarded(const std::function<int()>& body) {
   try {
     return body();

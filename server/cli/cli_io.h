@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "app/answer.h"
 #include "cli/commands.h"
 
 namespace softtune::cli {
@@ -34,6 +35,9 @@ nlohmann::json read_request_file(const std::string& path);
 
 /// Prints a JSON document on stdout.
 void print_json(const nlohmann::json& doc);
+
+/// Prints a use case's answer: JSON as print_json does, CSV and SVG text as they are.
+void print_answer(const app::Answer& answer);
 
 /// Runs `body`; a Problem goes to stderr as problem JSON with exit code 2, any other exception as a
 /// problem with status 500 and exit code 1.

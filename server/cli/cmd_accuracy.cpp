@@ -2,10 +2,9 @@
 #include <iostream>
 #include <sstream>
 
-#include "box2d_spring.h"
+#include "app/accuracy_app.h"
 #include "cli/cli_io.h"
 #include "cli/tune_flags.h"
-#include "codec/accuracy_codec.h"
 #include "codec/problem.h"
 
 namespace softtune::cli {
@@ -51,10 +50,8 @@ int run_accuracy(const Args& args) {
       std::cout << kHelp << kTuneFlagsHelp << kHelpTail;
       return kExitOk;
     }
-    const std::string format = flags.get("format").value_or("json");
-    if (format != "json" && format != "csv" && format != "svg") {
-      throw codec::invalid_field("--format", "must be json, csv or svg");
-    }
+    const app::Format format = app::format_named(flags.get("format").value_or("json"),
+                                                 {app::Format::json, app::Format::csv, app::Format::svg}, "--format");
     nlohmann::json request;
     if (auto file = flags.get("request")) {
       for (const auto& [name, value] : flags.values) {
@@ -70,19 +67,7 @@ int run_accuracy(const Args& args) {
       if (auto rates = flags.get("step-rates")) request["step_rates"] = step_rates_from_flag(*rates);
       if (flags.has("no-box2d")) request["box2d"] = false;
     }
-    const codec::AccuracyRequest q = codec::decode_accuracy_request(request);
-    const EngineRunner box2d{kBox2DRowName, run_box2d_spring};
-    const AccuracyReport report = codec::run_accuracy_report(q, box2d);
-    if (format == "svg") {
-      std::cout << codec::accuracy_svg(q, report);
-      return kExitOk;
-    }
-    const nlohmann::json encoded = codec::encode_accuracy_report(q, report, q.box2d);
-    if (format == "csv") {
-      std::cout << codec::accuracy_csv(encoded);
-    } else {
-      print_json(encoded);
-    }
+    print_answer(app::accuracy_answer(request, format));
     return kExitOk;
   });
 }

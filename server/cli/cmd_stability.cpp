@@ -1,6 +1,7 @@
 // `softtune stability`: the extreme-case sweep (contract: README.md, "Accuracy and stability").
 #include <iostream>
 
+#include "app/stability_app.h"
 #include "cli/cli_io.h"
 #include "codec/problem.h"
 #include "codec/stability_codec.h"
@@ -29,15 +30,15 @@ int run_stability(const Args& args) {
       std::cout << kHelp;
       return kExitOk;
     }
-    const std::string format = flags.get("format").value_or("json");
-    if (format != "json" && format != "svg") throw codec::invalid_field("--format", "must be json or svg");
+    const app::Format format =
+        app::format_named(flags.get("format").value_or("json"), {app::Format::json, app::Format::svg}, "--format");
     nlohmann::json doc;
     if (auto file = flags.get("request")) doc = read_request_file(*file);
     codec::StabilityRequest q = codec::decode_stability_request(doc);
-    if (flags.has("summary") || format == "svg") q.include_cases = false;
-    const nlohmann::json out = codec::run_stability(q);
-    if (format == "svg") {
-      std::cout << codec::stability_svg(out);
+    if (flags.has("summary") || format == app::Format::svg) q.include_cases = false;
+    const nlohmann::json out = app::run_stability(q);
+    if (format == app::Format::svg) {
+      std::cout << app::stability_svg(out);
     } else if (flags.has("summary")) {
       print_json({{"summary", out.at("summary")}, {"chain", out.contains("chain") ? out.at("chain") : nlohmann::json()},
                   {"stages", out.at("stages")}});

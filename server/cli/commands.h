@@ -15,5 +15,6 @@ int run_stability(const Args& args);
 int run_simulate(const Args& args);
 int run_check(const Args& args);
 int run_render(const Args& args);
+int run_verify(const Args& args);
 
 }  // namespace softtune::cli

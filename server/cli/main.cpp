@@ -20,6 +20,7 @@ constexpr Command kCommands[] = {
     {"simulate", "run a scene or preset in Box2D / the core integrators, measure the achieved response", softtune::cli::run_simulate},
     {"check", "run every preset's expectations (the automated preset test)", softtune::cli::run_check},
     {"render", "preview frames of a preset -> DIR/frame_0000.png ... and filmstrip.png", softtune::cli::run_render},
+    {"verify", "run a tuning in the real engines linked in process: measured against predicted", softtune::cli::run_verify},
 };
 
 int usage(std::ostream& out, int code) {

@@ -5,7 +5,6 @@
 #include "codec/json_writer.h"
 #include "codec/list_reader.h"
 #include "codec/problem.h"
-#include "plot/svg_writer.h"
 #include "softtune/validation.h"
 
 namespace softtune::codec {
@@ -171,11 +170,8 @@ StabilityRequest decode_stability_request(const json& doc) {
   return q;
 }
 
-json run_stability(const StabilityRequest& q) {
-  StageList stages;
-  stages.add(Stage::validate);
-  stages.add(Stage::stability_sweep);
-  const SweepResult sweep = run_sweep(q.sweep);
+json encode_stability_result(const StabilityRequest& q, const SweepResult& sweep,
+                              const std::optional<ChainSweepResult>& chain, const StageList& stages) {
   const SweepSummary& s = sweep.summary;
   json out;
   out["summary"] = {
@@ -196,60 +192,12 @@ json run_stability(const StabilityRequest& q) {
     for (const SweepCase& c : sweep.cases) cases.push_back(case_json(c));
     out["cases"] = std::move(cases);
   }
-  if (q.run_chain) {
-    stages.add(Stage::sequential_impulse_chain);
-    const ChainSweepResult chain = run_chain_sweep(q.chain);
-    out["chain"] = chain_json(q, chain);
-    out["summary"]["passed"] = out["summary"]["passed"].get<bool>() && chain.mismatches == 0;
+  if (chain) {
+    out["chain"] = chain_json(q, *chain);
+    out["summary"]["passed"] = out["summary"]["passed"].get<bool>() && chain->mismatches == 0;
   }
   out["stages"] = stages_json(stages);
   return out;
-}
-
-json run_stability(const json& doc) { return run_stability(decode_stability_request(doc)); }
-
-plot::Plot stability_map_plot(double damping_ratio) {
-  using plot::Scale;
-  char title[160];
-  std::snprintf(title, sizeof title, "Stability map at zeta = %g: spectral radius against omega h (dashed: 1)", damping_ratio);
-  plot::Plot p{title, plot::make_axis("omega h", "rad", Scale::log), plot::make_axis("spectral radius", "", Scale::log, 1e-3, 1e3), {}, {1.0}};
-  const double mass = 1.0, h = 1.0;
-  const int samples = 240;
-  for (Method m : kAllMethods) {
-    plot::Series series{std::string(method_name(m)), "", {}, {}, plot::Style::line, false};
-    for (int i = 0; i <= samples; ++i) {
-      const double omega_h = std::pow(10.0, -2.0 + 4.0 * i / samples);
-      const StepModel model = make_step_model(mass, omega_h / h, damping_ratio, h);
-      series.x.push_back(omega_h);
-      series.y.push_back(analyze(m, model, omega_h / h, damping_ratio).spectral_radius);
-    }
-    p.series.push_back(std::move(series));
-  }
-  return p;
-}
-
-std::string stability_svg(const json& encoded) {
-  std::vector<plot::Plot> plots;
-  for (double zeta : {0.0, 0.1, 1.0, 10.0}) plots.push_back(stability_map_plot(zeta));
-  if (encoded.contains("chain")) {
-    using plot::Scale;
-    plot::Plot p{"Sequential impulses, light link + heavy weight: highest stable f h (scan ends at 2)", plot::make_axis("mass ratio m2 / m1", "", Scale::log),
-                 plot::make_axis("highest stable f h", "", Scale::log), {}, {}};
-    for (const json& l : encoded.at("chain").at("limits")) {
-      const std::string name = std::to_string(l.at("iterations").get<int>()) + " iterations" +
-                               (l.at("warm_start").get<bool>() ? ", warm start" : "");
-      auto it = std::find_if(p.series.begin(), p.series.end(), [&](const plot::Series& s) { return s.name == name; });
-      if (it == p.series.end()) {
-        p.series.push_back({name, "", {}, {}, plot::Style::line_and_markers, l.at("warm_start").get<bool>()});
-        it = p.series.end() - 1;
-      }
-      const json& f = l.at("highest_stable_frequency_ratio");
-      it->x.push_back(l.at("mass_ratio").get<double>());
-      it->y.push_back(f.is_null() ? std::nan("") : f.get<double>());
-    }
-    plots.push_back(std::move(p));
-  }
-  return plot::render_svg(plots);
 }
 
 }  // namespace softtune::codec

@@ -4,10 +4,11 @@
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
-#include "plot/plot_model.h"
 #include "softtune/sequential_impulse.h"
+#include "softtune/tune.h"
 #include "softtune/stability_sweep.h"
 
 namespace softtune::codec {
@@ -32,14 +33,8 @@ struct StabilityRequest {
 /// An empty object (or null) is the default sweep. Throws Problem (422) naming the field and the rule.
 StabilityRequest decode_stability_request(const nlohmann::json& doc);
 
-/// Runs the sweep and the chain; the JSON has summary, cases (unless summary only), chain, stages.
-nlohmann::json run_stability(const StabilityRequest& request);
-nlohmann::json run_stability(const nlohmann::json& doc);
-
-/// Spectral radius against omega h per integrator at one damping ratio (log-log, reference line at 1).
-plot::Plot stability_map_plot(double damping_ratio);
-
-/// Stability maps at zeta = 0, 0.1, 1 and 10, and the chain's highest stable frequency per mass ratio.
-std::string stability_svg(const nlohmann::json& encoded);
+/// The JSON answer: summary, cases (unless summary only), chain (when it ran), stages.
+nlohmann::json encode_stability_result(const StabilityRequest& request, const SweepResult& sweep,
+                                       const std::optional<ChainSweepResult>& chain, const StageList& stages);
 
 }  // namespace softtune::codec

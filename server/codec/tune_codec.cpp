@@ -1,6 +1,8 @@
 #include "codec/tune_codec.h"
 
 #include <cmath>
+#include <cstdio>
+#include <span>
 
 #include "codec/json_writer.h"
 #include "codec/problem.h"
@@ -116,6 +118,60 @@ AnyConstraint read_any_constraint(ObjectReader& r) {
   return out;
 }
 
+std::string choices_text(std::span<const std::string_view> names) {
+  std::string out;
+  for (std::string_view n : names) out += (out.empty() ? "\"" : ", \"") + std::string(n) + "\"";
+  return out;
+}
+
+// engine_settings: {"<engine>": {"<setting>": number or choice}}, checked against each model's specs
+// (engines/engine_model.h SettingSpec: range, integer, choices). Unknown engines and settings are refused.
+std::vector<engines::SettingValues> read_engine_settings(ObjectReader& r) {
+  const json* v = r.raw("engine_settings");
+  if (!v) return {};
+  const std::string field = r.field("engine_settings");
+  if (!v->is_object()) throw invalid_field(field, "must be an object {engine: {setting: value}}");
+  const auto models = engines::engine_models();
+  std::vector<std::string_view> names;
+  for (const engines::EngineModel* m : models) names.push_back(m->name);
+  std::vector<engines::SettingValues> out(models.size());
+  for (const auto& [name, settings] : v->items()) {
+    std::size_t index = 0;
+    while (index < models.size() && models[index]->name != name) ++index;
+    if (index == models.size()) {
+      throw invalid_field(field + "." + name, "is not a modelled engine: one of " + choices_text(names));
+    }
+    const engines::EngineModel& model = *models[index];
+    ObjectReader s = read_object(settings, field + "." + name);
+    engines::SettingValues values = engines::default_settings(model);
+    for (std::size_t i = 0; i < model.settings.size(); ++i) {
+      const engines::SettingSpec& spec = model.settings[i];
+      if (!spec.choices.empty()) {
+        const std::vector<std::string_view> choices(spec.choices.begin(), spec.choices.end());
+        if (auto c = s.choice(spec.name, choices)) values[i] = static_cast<double>(*c);
+        continue;
+      }
+      std::optional<double> x;
+      if (spec.integer) {
+        if (auto n = s.integer(spec.name)) x = static_cast<double>(*n);
+      } else {
+        x = s.number(spec.name);
+      }
+      if (!x) continue;
+      if (!(*x >= spec.min && *x <= spec.max)) {
+        char rule[160];
+        std::snprintf(rule, sizeof rule, "must be %s in [%.17g, %.17g]", spec.integer ? "an integer" : "a number",
+                      spec.min, spec.max);
+        throw invalid_field(s.field(spec.name), rule);
+      }
+      values[i] = *x;
+    }
+    s.finish();
+    out[index] = std::move(values);
+  }
+  return out;
+}
+
 }  // namespace
 
 TuneRequest read_tune_fields(ObjectReader& r) {
@@ -135,6 +191,7 @@ TuneRequest read_tune_fields(ObjectReader& r) {
   if (auto i = r.choice("mode", {"standard", "exact"})) q.mode = static_cast<SoftMode>(*i);
   q.effective_mass = r.number("effective_mass");
   if (auto c = r.object("constraint")) q.constraint = read_any_constraint(*c);
+  q.engine_settings = read_engine_settings(r);
   if (auto e = validate_tune_request(q)) throw invalid_field(e->field, e->rule);
   return q;
 }
@@ -165,6 +222,38 @@ json analysis_json(const DiscreteAnalysis& a) {
       {"achieved_damping_ratio", number_or_null(a.achieved_damping_ratio)},
       {"achieved_damped_frequency_hz", number_or_null(a.achieved_damped_frequency_hz)},
   };
+}
+
+json parameters_json(const engines::Parameters& parameters) {
+  json out = json::object();
+  for (const engines::Parameter& p : parameters) {
+    out[std::string(p.name)] = p.choice.empty() ? number_or_null(p.value) : json(p.choice);
+  }
+  return out;
+}
+
+json prediction_json(const engines::Prediction& p) {
+  return {{"frequency_hz", number_or_null(p.frequency_hz)},
+          {"damping_ratio", number_or_null(p.damping_ratio)},
+          {"spectral_radius", number_or_null(p.spectral_radius)},
+          {"stable", p.stable}};
+}
+
+// Each modelled engine's report joins that engine's object (SPEC.md 5): what was assumed, what to type,
+// what the engine does with it, and what to type so it does what was asked.
+void add_engine_reports(json& engines_out, const std::vector<engines::EngineReport>& reports) {
+  const auto models = engines::engine_models();
+  for (std::size_t i = 0; i < models.size() && i < reports.size(); ++i) {
+    const engines::EngineReport& r = reports[i];
+    json& e = engines_out[std::string(models[i]->name)];
+    e["model"] = models[i]->modelled;
+    e["settings"] = parameters_json(r.settings);
+    e["parameters"] = parameters_json(r.parameters);
+    e["predicted"] = prediction_json(r.predicted);
+    e["exact"] = r.exact ? parameters_json(*r.exact) : json();
+    e["exact_predicted"] = r.exact_predicted ? prediction_json(*r.exact_predicted) : json();
+    e["warnings"] = warnings_json(r.warnings);
+  }
 }
 
 json engines_json(const EngineExport& e) {
@@ -245,6 +334,7 @@ json encode_tune_result(const TuneRequest& q, const TuneResult& r) {
     stability[std::string(method_name(kAllMethods[i]))] = analysis_json(r.stability[i]);
   }
   out["stability"] = std::move(stability);
+  add_engine_reports(out["engines"], r.engine_reports);
   return out;
 }
 

@@ -4,43 +4,29 @@
 #include <mutex>
 #include <optional>
 
-#include "box2d_spring.h"
-#include "codec/accuracy_codec.h"
+#include "app/accuracy_app.h"
+#include "app/stability_app.h"
 #include "codec/json_reader.h"
 #include "codec/problem.h"
 #include "codec/scene_codec.h"
-#include "codec/stability_codec.h"
 
 namespace softtune::http {
 namespace {
 
-constexpr const char* kSvg = "image/svg+xml";
-constexpr const char* kCsv = "text/csv";
-
 /// The ?format= of a request (json when absent), refused (422, field "format") unless one of `allowed`.
-std::string output_format(const HttpRequest& request, std::initializer_list<std::string_view> allowed,
-                          const char* rule) {
-  const std::string format = request.query_value("format").value_or("json");
-  for (std::string_view a : allowed) {
-    if (format == a) return format;
-  }
-  throw codec::invalid_field("format", rule);
+app::Format output_format(const HttpRequest& request, std::initializer_list<app::Format> allowed) {
+  return app::format_named(request.query_value("format").value_or("json"), allowed, "format");
 }
 
-HttpResponse text_response(std::string body, const char* content_type) {
+HttpResponse answer_response(const app::Answer& answer) {
+  if (answer.format == app::Format::json) return json_response(answer.json);
   HttpResponse r;
-  r.content_type = content_type;
-  r.body = std::move(body);
+  r.content_type = std::string(answer.content_type());
+  r.body = answer.text;
   return r;
 }
 
-/// The stability answer in the asked format; the SVG needs no per-case list.
-HttpResponse stability_response(const nlohmann::json& encoded, const std::string& format) {
-  if (format == "svg") return text_response(codec::stability_svg(encoded), kSvg);
-  return json_response(encoded);
-}
-
-constexpr const char* kStabilityFormats = "must be json or svg";
+constexpr std::initializer_list<app::Format> kStabilityFormats = {app::Format::json, app::Format::svg};
 
 }  // namespace
 
@@ -63,13 +49,8 @@ HttpResponse preset(const HttpRequest& request, Service& service) {
 }
 
 HttpResponse accuracy(const HttpRequest& request, Service&) {
-  const std::string format = output_format(request, {"json", "csv", "svg"}, "must be json, csv or svg");
-  const codec::AccuracyRequest q = codec::decode_accuracy_request(codec::parse_json(request.body));
-  const AccuracyReport report = codec::run_accuracy_report(q, EngineRunner{kBox2DRowName, run_box2d_spring});
-  if (format == "svg") return text_response(codec::accuracy_svg(q, report), kSvg);
-  const nlohmann::json encoded = codec::encode_accuracy_report(q, report, q.box2d);
-  if (format == "csv") return text_response(codec::accuracy_csv(encoded), kCsv);
-  return json_response(encoded);
+  const app::Format format = output_format(request, {app::Format::json, app::Format::csv, app::Format::svg});
+  return answer_response(app::accuracy_answer(codec::parse_json(request.body), format));
 }
 
 Handler default_stability() {
@@ -82,20 +63,24 @@ Handler default_stability() {
   };
   auto kept = std::make_shared<Kept>();
   return [kept](const HttpRequest& request, Service&) {
-    const std::string format = output_format(request, {"json", "svg"}, kStabilityFormats);
+    const app::Format format = output_format(request, kStabilityFormats);
     std::lock_guard lock(kept->mutex);
-    if (!kept->encoded) kept->encoded = codec::run_stability(codec::decode_stability_request(nlohmann::json()));
-    std::shared_ptr<const HttpResponse>& answer = format == "svg" ? kept->svg : kept->json;
-    if (!answer) answer = std::make_shared<const HttpResponse>(stability_response(*kept->encoded, format));
+    if (!kept->encoded) kept->encoded = app::run_stability(codec::decode_stability_request(nlohmann::json()));
+    std::shared_ptr<const HttpResponse>& answer = format == app::Format::svg ? kept->svg : kept->json;
+    if (!answer) {
+      app::Answer a;
+      a.format = format;
+      if (format == app::Format::svg) a.text = app::stability_svg(*kept->encoded);
+      else a.json = *kept->encoded;
+      answer = std::make_shared<const HttpResponse>(answer_response(a));
+    }
     return *answer;
   };
 }
 
 HttpResponse stability(const HttpRequest& request, Service&) {
-  const std::string format = output_format(request, {"json", "svg"}, kStabilityFormats);
-  codec::StabilityRequest q = codec::decode_stability_request(codec::parse_json(request.body));
-  if (format == "svg") q.include_cases = false;
-  return stability_response(codec::run_stability(q), format);
+  const app::Format format = output_format(request, kStabilityFormats);
+  return answer_response(app::stability_answer(codec::decode_stability_request(codec::parse_json(request.body)), format));
 }
 
 }  // namespace softtune::http

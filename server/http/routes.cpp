@@ -1,5 +1,6 @@
 #include "http/routes.h"
 
+#include "app/verify_app.h"
 #include "codec/json_reader.h"
 #include "codec/tune_codec.h"
 #include "http/capability_routes.h"
@@ -79,6 +80,7 @@ std::vector<Route> service_routes() {
       {"GET", "/api/v1/health", health},
       {"POST", "/api/v1/tune", json_contract(codec::run_tune, "tune")},
       {"POST", "/api/v1/simulate", simulate},
+      {"POST", "/api/v1/verify", json_contract(app::run_verify, "")},
       {"GET", "/api/v1/presets", presets},
       {"GET", "/api/v1/presets/{name}", preset},
       {"POST", "/api/v1/accuracy", accuracy},

@@ -1,5 +1,6 @@
 // The accuracy contract: fields, validation Problems naming the field, no NaN/infinity, CSV and SVG.
 #include "codec/accuracy_codec.h"
+#include "app/accuracy_app.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,11 @@
 
 namespace softtune::codec {
 namespace {
+
+using app::accuracy_csv;
+using app::accuracy_svg;
+using app::run_accuracy;
+using app::run_accuracy_report;
 
 using nlohmann::json;
 

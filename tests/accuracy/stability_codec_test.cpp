@@ -1,5 +1,6 @@
 // The stability contract: a custom sweep, its fields, and Problems naming the field.
 #include "codec/stability_codec.h"
+#include "app/stability_app.h"
 
 #include <gtest/gtest.h>
 
@@ -7,6 +8,9 @@
 
 namespace softtune::codec {
 namespace {
+
+using app::run_stability;
+using app::stability_svg;
 
 using nlohmann::json;
 

@@ -7,6 +7,8 @@
 #include <fstream>
 
 #include "box2d_spring.h"
+#include "app/accuracy_app.h"
+#include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
 #include "codec/scene_codec.h"
 #include "codec/stability_codec.h"
@@ -138,7 +140,7 @@ TEST(CapabilityRoutes, AccuracyIsTheCliReportWithTheBox2DRow) {
   const json doc = json::parse(r->body);
   EXPECT_EQ(conformance_error("/api/v1/accuracy", "post", 200, kJson, doc), "");
   const std::optional<softtune::EngineRunner> box2d = softtune::EngineRunner{softtune::kBox2DRowName, softtune::run_box2d_spring};
-  EXPECT_EQ(without_timing(doc), without_timing(softtune::codec::run_accuracy(json::parse(kSmallAccuracy), box2d)));
+  EXPECT_EQ(without_timing(doc), without_timing(softtune::app::run_accuracy(json::parse(kSmallAccuracy), box2d)));
   bool box2d_row = false;
   for (const json& row : doc["rows"]) {
     box2d_row = box2d_row || row["method"] == softtune::kBox2DRowName;
@@ -159,7 +161,7 @@ TEST(CapabilityRoutes, AccuracyCsvSvgAndErrors) {
   ASSERT_EQ(csv->status, 200) << csv->body;
   EXPECT_EQ(media_type(csv), "text/csv");
   // A header line and one line per row: 11 methods x substeps at 60 fps plus Box2D's.
-  const json rows = softtune::codec::run_accuracy(json::parse(kSmallAccuracy),
+  const json rows = softtune::app::run_accuracy(json::parse(kSmallAccuracy),
                                                   softtune::EngineRunner{softtune::kBox2DRowName, softtune::run_box2d_spring})["rows"];
   EXPECT_EQ(static_cast<std::size_t>(std::count(csv->body.begin(), csv->body.end(), '\n')), rows.size() + 1);
 
@@ -202,7 +204,7 @@ TEST(CapabilityRoutes, StabilityDefaultSweepIsKeptAndPasses) {
   ASSERT_EQ(svg->status, 200);
   EXPECT_EQ(media_type(svg), "image/svg+xml");
   EXPECT_NE(svg->body.find("<svg"), std::string::npos);
-  EXPECT_EQ(svg->body, softtune::codec::stability_svg(doc));
+  EXPECT_EQ(svg->body, softtune::app::stability_svg(doc));
   EXPECT_LT(std::chrono::steady_clock::now() - started, first_took / 4);
 
   expect_problem(s.client().Get("/api/v1/stability?format=csv"), 422, "format", "/api/v1/stability", "get");
@@ -214,7 +216,7 @@ TEST(CapabilityRoutes, StabilityCustomSweepIsTheCliAnswer) {
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
   const json doc = json::parse(r->body);
-  EXPECT_EQ(doc, softtune::codec::run_stability(json::parse(kSmallSweep)));
+  EXPECT_EQ(doc, softtune::app::run_stability(json::parse(kSmallSweep)));
   EXPECT_EQ(conformance_error("/api/v1/stability", "post", 200, kJson, doc), "");
   // Soft constraints are implicit Euler: stable at every ratio; explicit Euler grows undamped (zeta 0).
   for (const json& c : doc["cases"]) {

@@ -9,6 +9,8 @@
 #include <map>
 #include <sstream>
 
+#include "app/accuracy_app.h"
+#include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
 #include "codec/problem.h"
 #include "codec/scene_codec.h"
@@ -175,8 +177,8 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
   const std::string presets = SOFTTUNE_SOURCE_DIR "/presets";
   const std::map<std::string, std::function<json(const json&)>> contracts = {
       {"/api/v1/simulate", [&](const json& q) { return softtune::codec::run_simulate(q, presets); }},
-      {"/api/v1/accuracy", [](const json& q) { return softtune::codec::run_accuracy(q); }},
-      {"/api/v1/stability", [](const json& q) { return softtune::codec::run_stability(q); }},
+      {"/api/v1/accuracy", [](const json& q) { return softtune::app::run_accuracy(q); }},
+      {"/api/v1/stability", [](const json& q) { return softtune::app::run_stability(q); }},
   };
   for (const auto& [path, contract] : contracts) {
     const json& body = openapi_document()["paths"][path]["post"]["requestBody"]["content"]["application/json"];

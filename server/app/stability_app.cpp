@@ -1,0 +1,84 @@
+#include "app/stability_app.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "plot/svg_writer.h"
+
+namespace softtune::app {
+
+using nlohmann::json;
+
+json run_stability(const codec::StabilityRequest& q) {
+  StageList stages;
+  stages.add(Stage::validate);
+  stages.add(Stage::stability_sweep);
+  const SweepResult sweep = run_sweep(q.sweep);
+  std::optional<ChainSweepResult> chain;
+  if (q.run_chain) {
+    stages.add(Stage::sequential_impulse_chain);
+    chain = run_chain_sweep(q.chain);
+  }
+  return codec::encode_stability_result(q, sweep, chain, stages);
+}
+
+json run_stability(const json& doc) { return run_stability(codec::decode_stability_request(doc)); }
+
+Answer stability_answer(codec::StabilityRequest request, Format format) {
+  Answer a;
+  a.format = format;
+  if (format == Format::svg) {
+    request.include_cases = false;
+    a.text = stability_svg(run_stability(request));
+  } else {
+    a.json = run_stability(request);
+  }
+  return a;
+}
+
+plot::Plot stability_map_plot(double damping_ratio) {
+  using plot::Scale;
+  char title[160];
+  std::snprintf(title, sizeof title, "Stability map at zeta = %g: spectral radius against omega h (dashed: 1)", damping_ratio);
+  plot::Plot p{title, plot::make_axis("omega h", "rad", Scale::log), plot::make_axis("spectral radius", "", Scale::log, 1e-3, 1e3), {}, {1.0}};
+  const double mass = 1.0, h = 1.0;
+  const int samples = 240;
+  for (Method m : kAllMethods) {
+    plot::Series series{std::string(method_name(m)), "", {}, {}, plot::Style::line, false};
+    for (int i = 0; i <= samples; ++i) {
+      const double omega_h = std::pow(10.0, -2.0 + 4.0 * i / samples);
+      const StepModel model = make_step_model(mass, omega_h / h, damping_ratio, h);
+      series.x.push_back(omega_h);
+      series.y.push_back(analyze(m, model, omega_h / h, damping_ratio).spectral_radius);
+    }
+    p.series.push_back(std::move(series));
+  }
+  return p;
+}
+
+std::string stability_svg(const json& encoded) {
+  std::vector<plot::Plot> plots;
+  for (double zeta : {0.0, 0.1, 1.0, 10.0}) plots.push_back(stability_map_plot(zeta));
+  if (encoded.contains("chain")) {
+    using plot::Scale;
+    plot::Plot p{"Sequential impulses, light link + heavy weight: highest stable f h (scan ends at 2)", plot::make_axis("mass ratio m2 / m1", "", Scale::log),
+                 plot::make_axis("highest stable f h", "", Scale::log), {}, {}};
+    for (const json& l : encoded.at("chain").at("limits")) {
+      const std::string name = std::to_string(l.at("iterations").get<int>()) + " iterations" +
+                               (l.at("warm_start").get<bool>() ? ", warm start" : "");
+      auto it = std::find_if(p.series.begin(), p.series.end(), [&](const plot::Series& s) { return s.name == name; });
+      if (it == p.series.end()) {
+        p.series.push_back({name, "", {}, {}, plot::Style::line_and_markers, l.at("warm_start").get<bool>()});
+        it = p.series.end() - 1;
+      }
+      const json& f = l.at("highest_stable_frequency_ratio");
+      it->x.push_back(l.at("mass_ratio").get<double>());
+      it->y.push_back(f.is_null() ? std::nan("") : f.get<double>());
+    }
+    plots.push_back(std::move(p));
+  }
+  return plot::render_svg(plots);
+}
+
+}  // namespace softtune::app

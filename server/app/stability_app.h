@@ -1,0 +1,28 @@
+#pragma once
+// The stability use case, shared by `softtune stability` and GET|POST /api/v1/stability: the extreme-case
+// sweep (predicted against observed per integrator) and the sequential-impulse mass-ratio chain, as JSON or
+// as SVG maps.
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "app/answer.h"
+#include "codec/stability_codec.h"
+#include "plot/plot_model.h"
+
+namespace softtune::app {
+
+/// Runs the sweep and the chain; the JSON has summary, cases (unless summary only), chain, stages.
+nlohmann::json run_stability(const codec::StabilityRequest& request);
+nlohmann::json run_stability(const nlohmann::json& doc);
+
+/// The answer in `format` (json or svg); the SVG needs no per-case list, so it leaves the cases out.
+Answer stability_answer(codec::StabilityRequest request, Format format);
+
+/// Spectral radius against omega h per integrator at one damping ratio (log-log, reference line at 1).
+plot::Plot stability_map_plot(double damping_ratio);
+
+/// Stability maps at zeta = 0, 0.1, 1 and 10, and the chain's highest stable frequency per mass ratio.
+std::string stability_svg(const nlohmann::json& encoded);
+
+}  // namespace softtune::app
