@@ -10,7 +10,7 @@
 #include <ctime>
 #include <memory>
 
-#include "codec/preset_loader.h"
+#include "app/preset_store.h"
 #include "codec/scene_codec.h"
 #include "softtune/scene/box2d_scene.h"
 #include "softtune/scene/runner.h"
@@ -22,7 +22,7 @@ using namespace softtune::scene;
 
 const char* const kPresets[] = {"oscillator", "buddhas", "mouse", "stiff", "chain", "bridge", "vehicle"};
 
-Scene load(const std::string& name) { return codec::decode_scene(codec::load_preset(SOFTTUNE_PRESETS_DIR, name)); }
+Scene load(const std::string& name) { return codec::decode_scene(app::load_preset(SOFTTUNE_PRESETS_DIR, name)); }
 
 // The core oscillators of a scene stepped directly; a joint-linked one takes the joint's tuning and mass.
 double raw_core(const Scene& scene, const std::vector<JointTuning>& joints) {

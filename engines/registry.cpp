@@ -1,12 +1,19 @@
 // The real engines linked in process, in the order answers list them. Each engine room adds one line.
 #include <array>
 
+#include "bullet_engine.h"
+#include "mujoco_engine.h"
+#include "ode_engine.h"
 #include "softtune/engines/verify.h"
 
 namespace softtune::engines {
 
 std::span<const RealEngine* const> real_engines() {
-  static constexpr std::array<const RealEngine*, 0> kEngines = {};
+  static constexpr std::array kEngines = {
+      &kOdeEngine,
+      &kBulletEngine,
+      &kMujocoEngine,
+  };
   return kEngines;
 }
 

@@ -13,9 +13,10 @@
 #include "app/accuracy_app.h"
 #include "codec/accuracy_codec.h"
 #include "codec/json_reader.h"
-#include "codec/preset_loader.h"
-#include "codec/preview_service.h"
+#include "app/preset_store.h"
+#include "app/preview_service.h"
 #include "codec/problem.h"
+#include "app/simulate_app.h"
 #include "codec/scene_codec.h"
 #include "codec/stability_codec.h"
 #include "codec/tune_codec.h"
@@ -54,7 +55,10 @@ void expecting_problems(F&& f) {
 
 /// A tune request body: parse_json -> decode -> validate -> tune -> encode (the CLI's and the route's path).
 inline void tune_request(std::string_view text) {
-  expecting_problems([&] { check_answer(codec::run_tune(codec::parse_json(text))); });
+  expecting_problems([&] {
+    const TuneRequest q = codec::decode_tune_request(codec::parse_json(text));
+    check_answer(codec::encode_tune_result(q, tune(q)));
+  });
 }
 
 /// Any body through every JSON route's decoder: tune, accuracy, stability, the preview plan.
@@ -68,12 +72,12 @@ inline void request_decode(std::string_view text) {
   expecting_problems([&] { (void)codec::decode_tune_request(doc); });
   expecting_problems([&] { (void)codec::decode_accuracy_request(doc); });
   expecting_problems([&] { (void)codec::decode_stability_request(doc); });
-  expecting_problems([&] { (void)codec::plan_preview(doc, presets_dir()); });
+  expecting_problems([&] { (void)app::plan_preview(doc, presets_dir()); });
 }
 
 /// A simulate request ({"preset"}, {"scene"} or a bare scene): schema -> decode_scene -> run -> encode.
 inline void simulate_request(std::string_view text) {
-  expecting_problems([&] { check_answer(codec::run_simulate(codec::parse_json(text), presets_dir())); });
+  expecting_problems([&] { check_answer(app::run_simulate(codec::parse_json(text), presets_dir())); });
 }
 
 /// An accuracy request: decode -> work-precision report -> encode.
@@ -83,10 +87,10 @@ inline void accuracy_request(std::string_view text) {
 
 /// A preset file as load_preset reads it (strict parse, the directory's schema), then decoded to a scene.
 inline void preset_load(std::string_view text) {
-  static const nlohmann::json schema = codec::load_schema(presets_dir());
+  static const nlohmann::json schema = app::load_schema(presets_dir());
   expecting_problems([&] {
     const nlohmann::json preset = codec::parse_json(text);
-    codec::validate_preset(preset, schema, "fuzz.json");
+    app::validate_preset(preset, schema, "fuzz.json");
     (void)codec::decode_scene(preset);
   });
 }

@@ -11,6 +11,8 @@ packages=(
   nlohmann-json3-dev                 # server: JSON codec
   libgtest-dev libbenchmark-dev      # tests, benchmarks
   libbox2d-dev                       # scene/ and engines/box2d_v2_4: Box2D 2.4
+  libode-dev                         # engines/ode: ODE 0.16 conformance
+  libmujoco-dev                      # engines/mujoco, tests/engines/mujoco: MuJoCo 2.2.2
   libosmesa6-dev libpng-dev          # render: off-screen frames, PNG
   libcpp-httplib-dev                 # server: HTTP
   libssl-dev                         # render: SHA-256 of preview names (OpenSSL libcrypto, EVP)
@@ -18,6 +20,7 @@ packages=(
   wrk                                # bench: HTTP load
   clang-14 libclang-rt-14-dev python3  # security: libFuzzer harnesses, attack suite
   valgrind                           # tests: uninitialised reads in the Box2D tests (memcheck)
+  libbullet-dev                      # engines/bullet, tests/engines/bullet: Bullet 3.24
 )
 
 missing=()

@@ -3,8 +3,9 @@
 #include <iostream>
 
 #include "cli/cli_io.h"
-#include "codec/preset_loader.h"
+#include "app/preset_store.h"
 #include "codec/problem.h"
+#include "app/simulate_app.h"
 #include "codec/scene_codec.h"
 
 namespace softtune::cli {
@@ -49,15 +50,15 @@ int run_check(const Args& args) {
       return kExitOk;
     }
     if (flags.positional.size() > 1) throw codec::invalid_field(flags.positional[1], "check takes at most one directory");
-    const std::string dir = codec::resolve_presets_dir(flags.positional.empty() ? std::nullopt : std::optional(flags.positional[0]));
-    const std::vector<std::string> names = codec::list_presets(dir);
+    const std::string dir = app::resolve_presets_dir(flags.positional.empty() ? std::nullopt : std::optional(flags.positional[0]));
+    const std::vector<std::string> names = app::list_presets(dir);
     if (names.empty()) throw codec::Problem(404, "Not found", "presets", "no presets in \"" + dir + "\"");
     bool all = true;
     nlohmann::json report = nlohmann::json::array();
     for (const std::string& name : names) {
       nlohmann::json result;
       try {
-        result = codec::check_preset(codec::load_preset(dir, name));
+        result = app::check_preset(app::load_preset(dir, name));
       } catch (const codec::Problem& p) {
         result = {{"name", name}, {"passed", false}, {"problem", codec::problem_json(p)}};
       }

@@ -6,8 +6,8 @@
 #include "cli/cli_io.h"
 #include "cli/flag_fields.h"
 #include "codec/json_reader.h"
-#include "codec/preset_loader.h"
-#include "codec/preview_service.h"
+#include "app/preset_store.h"
+#include "app/preview_service.h"
 #include "codec/problem.h"
 
 namespace softtune::cli {
@@ -99,8 +99,8 @@ int run_render(const Args& args) {
       throw codec::invalid_field("--out", "cannot create the directory \"" + *out_dir + "\"");
     }
 
-    codec::PreviewService previews;
-    const nlohmann::json answer = previews.start(request, codec::resolve_presets_dir(flags.get("presets")), "");
+    app::PreviewService previews;
+    const nlohmann::json answer = previews.start(request, app::resolve_presets_dir(flags.get("presets")), "");
     const std::string id = answer.at("id");
     auto frame_name = [](int i) {
       char name[32];

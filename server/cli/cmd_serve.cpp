@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "cli/cli_io.h"
-#include "codec/preset_loader.h"
+#include "app/preset_store.h"
 #include "codec/problem.h"
 #include "http/http_transport.h"
 #include "http/limits.h"
@@ -67,7 +67,7 @@ int run_serve(const Args& args) {
     if (!std::filesystem::is_directory(config.web_root)) {
       std::cerr << "softtune: web folder \"" << config.web_root.string() << "\" not found; the page will answer 404\n";
     }
-    config.presets_dir = codec::resolve_presets_dir(flags.get("presets"));
+    config.presets_dir = app::resolve_presets_dir(flags.get("presets"));
     if (!std::filesystem::is_directory(config.presets_dir)) {
       std::cerr << "softtune: presets folder \"" << config.presets_dir << "\" not found; /api/v1/presets will answer 404\n";
     }

@@ -2,8 +2,9 @@
 #include <iostream>
 
 #include "cli/cli_io.h"
-#include "codec/preset_loader.h"
+#include "app/preset_store.h"
 #include "codec/problem.h"
+#include "app/simulate_app.h"
 #include "codec/scene_codec.h"
 
 namespace softtune::cli {
@@ -43,7 +44,7 @@ int run_simulate(const Args& args) {
     if (auto m = flags.get("mass-model")) request["mass_model"] = *m;
     if (flags.has("frames")) request["frames"] = true;
     if (flags.has("frame-stride")) request["frame_stride"] = flag_number(flags, "frame-stride");
-    print_json(codec::run_simulate(request, codec::resolve_presets_dir(flags.get("presets"))));
+    print_json(app::run_simulate(request, app::resolve_presets_dir(flags.get("presets"))));
     return kExitOk;
   });
 }

@@ -4,6 +4,7 @@
 #include "cli/cli_io.h"
 #include "cli/tune_flags.h"
 #include "codec/problem.h"
+#include "app/tune_app.h"
 #include "codec/tune_codec.h"
 
 namespace softtune::cli {
@@ -36,7 +37,7 @@ int run_tune(const Args& args) {
     } else {
       request = tune_fields_from_flags(flags);
     }
-    print_json(codec::run_tune(request));
+    print_json(app::run_tune(request));
     return kExitOk;
   });
 }

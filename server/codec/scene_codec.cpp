@@ -4,7 +4,6 @@
 
 #include "codec/json_reader.h"
 #include "codec/json_writer.h"
-#include "codec/preset_loader.h"
 #include "codec/problem.h"
 #include "codec/tune_codec.h"
 
@@ -79,12 +78,6 @@ WorldSettings read_world(ObjectReader& r) {
   return w;
 }
 
-bool read_bool(ObjectReader& r, std::string_view key, bool fallback) {
-  const json* v = r.raw(key);
-  if (!v) return fallback;
-  if (!v->is_boolean()) throw invalid_field(r.field(key), "must be true or false");
-  return v->get<bool>();
-}
 
 ShapeSettings read_shape(ObjectReader& r) {
   ShapeSettings s;
@@ -272,7 +265,6 @@ json snapshot_json(const Snapshot& s) {
   return {{"frame", s.frame}, {"time", number_or_null(s.time_s)}, {"bodies", std::move(bodies)}, {"joints", std::move(joints)}};
 }
 
-void throw_field_error(const FieldError& e) { throw invalid_field(e.field, e.rule); }
 
 }  // namespace
 
@@ -335,79 +327,13 @@ json encode_scene_result(const Scene& scene, const SceneResult& r) {
   return out;
 }
 
-json requested_scene_document(ObjectReader& r, const json& request, const std::string& presets_dir,
-                              std::initializer_list<const char*> run_options) {
-  if (r.has("preset") || r.has("scene")) {
-    if (r.has("preset") && r.has("scene")) throw invalid_field("scene", "give either preset or scene, not both");
-    if (auto name = r.string("preset")) return load_preset(presets_dir, *name);
-    json scene_doc = *r.raw("scene");
-    // The schema would name the scene's root "" (its own JSON pointer); the request's field is "scene".
-    if (!scene_doc.is_object()) throw invalid_field("scene", "must be a JSON object (a scene, as in presets/*.json)");
-    validate_preset(scene_doc, load_schema(presets_dir), "scene");
-    return scene_doc;
-  }
-  // A bare scene: every key belongs to it, except the run options.
-  json scene_doc = request;
-  for (const char* option : run_options) scene_doc.erase(option);
-  validate_preset(scene_doc, load_schema(presets_dir), "request");
-  for (auto it = scene_doc.begin(); it != scene_doc.end(); ++it) r.raw(it.key());
-  return scene_doc;
+bool read_bool(ObjectReader& r, std::string_view key, bool fallback) {
+  const json* v = r.raw(key);
+  if (!v) return fallback;
+  if (!v->is_boolean()) throw invalid_field(r.field(key), "must be true or false");
+  return v->get<bool>();
 }
 
-json run_simulate(const json& request, const std::string& presets_dir) {
-  ObjectReader r = read_object(request, "");
-  const json scene_doc = requested_scene_document(r, request, presets_dir, {"frames", "frame_stride"});
-  RunOptions options;
-  options.mass_model = read_mass_model(r);
-  options.record_frames = read_bool(r, "frames", false);
-  if (auto stride = r.integer("frame_stride")) {
-    if (*stride < 1 || *stride > kMaxFrameStride) {
-      throw invalid_field("frame_stride", "must be an integer in [1, " + std::to_string(kMaxFrameStride) + "]");
-    }
-    options.frame_stride = static_cast<int>(*stride);
-  }
-  r.finish();
-  const Scene scene = decode_scene(scene_doc);
-  return encode_scene_result(scene, run_scene(scene, options));
-}
-
-json run_simulate(const json& request) { return run_simulate(request, resolve_presets_dir()); }
-
-json presets_index(const std::string& presets_dir) {
-  json list = json::array();
-  for (const std::string& name : list_presets(presets_dir)) {
-    // One broken file must not hide the others: it is listed with the problem that refuses it.
-    try {
-      const json preset = load_preset(presets_dir, name);
-      list.push_back({{"name", name}, {"description", preset.value("description", "")}, {"valid", true}});
-    } catch (const Problem& p) {
-      list.push_back({{"name", name}, {"description", ""}, {"valid", false}, {"problem", problem_json(p)}});
-    }
-  }
-  return {{"presets", std::move(list)}};
-}
-
-json preset_document(const std::string& presets_dir, const std::string& name) { return load_preset(presets_dir, name); }
-
-json check_preset(const json& preset) {
-  const Scene scene = decode_scene(preset);
-  const CheckResult check = check_scene(scene);
-  for (const SceneResult& run : check.runs) {
-    if (run.error) throw_field_error(*run.error);
-  }
-  json expectations = json::array();
-  for (const ExpectationResult& e : check.results) {
-    expectations.push_back({{"probe", e.expectation.probe},
-                            {"metric", metric_name(e.expectation.metric)},
-                            {"mass_model", mass_model_name(e.mass_model)},
-                            {"value", number_or_null(e.value)},
-                            {"min", number_or_null(e.expectation.min)},
-                            {"max", number_or_null(e.expectation.max)},
-                            {"passed", e.passed},
-                            {"note", e.expectation.note}});
-  }
-  return {{"name", scene.name}, {"passed", check.passed}, {"stages", stages_json(check.runs.front().stages)},
-          {"expectations", std::move(expectations)}};
-}
+void throw_field_error(const FieldError& e) { throw invalid_field(e.field, e.rule); }
 
 }  // namespace softtune::codec

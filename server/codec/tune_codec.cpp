@@ -338,9 +338,4 @@ json encode_tune_result(const TuneRequest& q, const TuneResult& r) {
   return out;
 }
 
-json run_tune(const json& doc) {
-  const TuneRequest q = decode_tune_request(doc);
-  return encode_tune_result(q, tune(q));
-}
-
 }  // namespace softtune::codec

@@ -18,7 +18,5 @@ TuneRequest read_tune_fields(ObjectReader& r);
 /// The response object (field list in README.md, "tune").
 nlohmann::json encode_tune_result(const TuneRequest& request, const TuneResult& result);
 
-/// decode + tune + encode.
-nlohmann::json run_tune(const nlohmann::json& doc);
 
 }  // namespace softtune::codec

@@ -8,6 +8,7 @@
 #include "app/stability_app.h"
 #include "codec/json_reader.h"
 #include "codec/problem.h"
+#include "app/simulate_app.h"
 #include "codec/scene_codec.h"
 
 namespace softtune::http {
@@ -31,16 +32,16 @@ constexpr std::initializer_list<app::Format> kStabilityFormats = {app::Format::j
 }  // namespace
 
 HttpResponse simulate(const HttpRequest& request, Service& service) {
-  return json_response(codec::run_simulate(codec::parse_json(request.body), service.config().presets_dir));
+  return json_response(app::run_simulate(codec::parse_json(request.body), service.config().presets_dir));
 }
 
 HttpResponse presets(const HttpRequest&, Service& service) {
-  return json_response(codec::presets_index(service.config().presets_dir));
+  return json_response(app::presets_index(service.config().presets_dir));
 }
 
 HttpResponse preset(const HttpRequest& request, Service& service) {
   try {
-    return json_response(codec::preset_document(service.config().presets_dir, request.params.at("name")));
+    return json_response(app::preset_document(service.config().presets_dir, request.params.at("name")));
   } catch (const codec::Problem& p) {
     // The loader names its own "preset" field; here the name is the path parameter.
     if (p.field != "preset") throw;

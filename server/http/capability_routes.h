@@ -7,13 +7,13 @@
 
 namespace softtune::http {
 
-/// POST /api/v1/simulate: codec::run_simulate with the service's presets directory.
+/// POST /api/v1/simulate: app::run_simulate with the service's presets directory.
 HttpResponse simulate(const HttpRequest& request, Service& service);
 
-/// GET /api/v1/presets: codec::presets_index.
+/// GET /api/v1/presets: app::presets_index.
 HttpResponse presets(const HttpRequest& request, Service& service);
 
-/// GET /api/v1/presets/{name}: codec::preset_document; 404 for an unknown name, 422 (field "name")
+/// GET /api/v1/presets/{name}: app::preset_document; 404 for an unknown name, 422 (field "name")
 /// for a name that is not 1 to 64 of [a-z0-9_-].
 HttpResponse preset(const HttpRequest& request, Service& service);
 

@@ -6,7 +6,7 @@
 #include <mutex>
 
 #include "codec/json_reader.h"
-#include "codec/preview_service.h"
+#include "app/preview_service.h"
 #include "codec/problem.h"
 
 namespace softtune::http {
@@ -17,9 +17,9 @@ constexpr const char* kPrefix = "/api/v1/preview";
 // One PreviewService per route table, made when first needed.
 class LazyPreviews {
  public:
-  codec::PreviewService& get() {
+  app::PreviewService& get() {
     std::call_once(once_, [this] {
-      service_ = std::make_unique<codec::PreviewService>();
+      service_ = std::make_unique<app::PreviewService>();
       started_.store(true, std::memory_order_release);
     });
     return *service_;
@@ -30,7 +30,7 @@ class LazyPreviews {
  private:
   std::once_flag once_;
   std::atomic<bool> started_{false};
-  std::unique_ptr<codec::PreviewService> service_;
+  std::unique_ptr<app::PreviewService> service_;
 };
 
 codec::Problem not_found(const std::string& what) { return codec::Problem(404, "Not found", "id", what); }

@@ -2,6 +2,7 @@
 
 #include "app/verify_app.h"
 #include "codec/json_reader.h"
+#include "app/tune_app.h"
 #include "codec/tune_codec.h"
 #include "http/capability_routes.h"
 #include "http/openapi.h"
@@ -78,7 +79,7 @@ Handler json_contract(std::function<nlohmann::json(const nlohmann::json&)> contr
 std::vector<Route> service_routes() {
   std::vector<Route> routes = {
       {"GET", "/api/v1/health", health},
-      {"POST", "/api/v1/tune", json_contract(codec::run_tune, "tune")},
+      {"POST", "/api/v1/tune", json_contract(app::run_tune, "tune")},
       {"POST", "/api/v1/simulate", simulate},
       {"POST", "/api/v1/verify", json_contract(app::run_verify, "")},
       {"GET", "/api/v1/presets", presets},

@@ -10,7 +10,7 @@
 
 namespace softtune::http {
 
-/// A handler for a JSON contract shared with the CLI (codec::run_tune, ...): parses the body with
+/// A handler for a JSON contract shared with the CLI (app::run_tune, ...): parses the body with
 /// codec::parse_json (400 when malformed, deeper than limits::kMaxJsonDepth or holding a duplicated key),
 /// runs `contract`, and answers 200 application/json. Problems it throws keep their status.
 /// A deterministic contract names a `cache`: its responses are kept in the service's response cache,

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "codec/preset_loader.h"
+#include "app/preset_store.h"
 #include "http/http_types.h"
 #include "http/limits.h"
 #include "http/metrics.h"
@@ -31,7 +31,7 @@ struct Route {
 
 struct ServiceConfig {
   std::filesystem::path web_root = "web";  ///< the static page's folder
-  std::string presets_dir = codec::resolve_presets_dir();  ///< simulate and presets: $SOFTTUNE_PRESETS, else presets/
+  std::string presets_dir = app::resolve_presets_dir();  ///< simulate and presets: $SOFTTUNE_PRESETS, else presets/
   std::size_t cache_entries = limits::kResponseCacheEntries;  ///< 0 turns the response cache off
   std::size_t cache_bytes = limits::kResponseCacheBytes;
 };

@@ -10,6 +10,7 @@
 #include "app/accuracy_app.h"
 #include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
+#include "app/simulate_app.h"
 #include "codec/scene_codec.h"
 #include "codec/stability_codec.h"
 #include "openapi_conformance.h"
@@ -73,7 +74,7 @@ TEST(CapabilityRoutes, SimulateBuddhasIsTheCliAnswer) {
   ASSERT_EQ(r->status, 200) << r->body;
   EXPECT_EQ(media_type(r), kJson);
   const json doc = json::parse(r->body);
-  EXPECT_EQ(doc, softtune::codec::run_simulate(request, kPresets));
+  EXPECT_EQ(doc, softtune::app::run_simulate(request, kPresets));
   EXPECT_EQ(doc["name"], "buddhas");
   EXPECT_TRUE(doc["finite"].get<bool>());
   EXPECT_EQ(conformance_error("/api/v1/simulate", "post", 200, kJson, doc), "");
@@ -102,7 +103,7 @@ TEST(CapabilityRoutes, PresetsListAndOnePreset) {
   ASSERT_TRUE(list);
   ASSERT_EQ(list->status, 200) << list->body;
   const json index = json::parse(list->body);
-  EXPECT_EQ(index, softtune::codec::presets_index(kPresets));
+  EXPECT_EQ(index, softtune::app::presets_index(kPresets));
   EXPECT_EQ(conformance_error("/api/v1/presets", "get", 200, kJson, index), "");
   std::vector<std::string> names;
   for (const json& p : index["presets"]) names.push_back(p["name"]);

@@ -13,8 +13,10 @@
 #include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
 #include "codec/problem.h"
+#include "app/simulate_app.h"
 #include "codec/scene_codec.h"
 #include "codec/stability_codec.h"
+#include "app/tune_app.h"
 #include "codec/tune_codec.h"
 #include "http/limits.h"
 #include "http/routes.h"
@@ -143,7 +145,7 @@ TEST(OpenApi, TuneSchemasAgreeWithTheCodec) {
   };
   for (const json& request : requests) {
     EXPECT_EQ(request_error(request), "") << request.dump();
-    const json response = softtune::codec::run_tune(request);
+    const json response = softtune::app::run_tune(request);
     EXPECT_EQ(conformance_error("/api/v1/tune", "post", 200, "application/json", response), "") << request.dump();
   }
 }
@@ -158,13 +160,13 @@ TEST(OpenApi, TuneRequestSchemaRefusesWhatTheCodecRefuses) {
   };
   for (const json& request : bad) {
     EXPECT_NE(request_error(request), "") << request.dump();
-    EXPECT_THROW(softtune::codec::run_tune(request), softtune::codec::Problem) << request.dump();
+    EXPECT_THROW(softtune::app::run_tune(request), softtune::codec::Problem) << request.dump();
   }
 }
 
 TEST(OpenApi, ProblemsConform) {
   try {
-    softtune::codec::run_tune(json::parse(R"({"response_frames": 12, "oscillation": "some"})"));
+    softtune::app::run_tune(json::parse(R"({"response_frames": 12, "oscillation": "some"})"));
     FAIL() << "expected a Problem";
   } catch (const softtune::codec::Problem& p) {
     EXPECT_EQ(conformance_error("/api/v1/tune", "post", 422, "application/problem+json", softtune::codec::problem_json(p)), "");
@@ -176,7 +178,7 @@ TEST(OpenApi, ProblemsConform) {
 TEST(OpenApi, CapabilityExamplesRunAndConform) {
   const std::string presets = SOFTTUNE_SOURCE_DIR "/presets";
   const std::map<std::string, std::function<json(const json&)>> contracts = {
-      {"/api/v1/simulate", [&](const json& q) { return softtune::codec::run_simulate(q, presets); }},
+      {"/api/v1/simulate", [&](const json& q) { return softtune::app::run_simulate(q, presets); }},
       {"/api/v1/accuracy", [](const json& q) { return softtune::app::run_accuracy(q); }},
       {"/api/v1/stability", [](const json& q) { return softtune::app::run_stability(q); }},
   };

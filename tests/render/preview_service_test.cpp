@@ -1,5 +1,5 @@
 // PreviewService (server/codec/preview_service.cpp): how many requests may wait for frames at once.
-#include "codec/preview_service.h"
+#include "app/preview_service.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +13,8 @@
 
 namespace softtune::codec {
 namespace {
+
+using namespace softtune::app;
 
 using nlohmann::json;
 

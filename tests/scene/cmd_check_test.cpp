@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "cli/commands.h"
-#include "codec/preset_loader.h"
+#include "app/preset_store.h"
 
 namespace softtune::cli {
 namespace {
@@ -18,7 +18,7 @@ TEST(CheckCommand, ExitCodeFollowsTheExpectations) {
   const fs::path dir = fs::temp_directory_path() / "softtune_check_test";
   fs::create_directories(dir);
   fs::copy_file(fs::path(SOFTTUNE_PRESETS_DIR) / "schema.json", dir / "schema.json", fs::copy_options::overwrite_existing);
-  nlohmann::json mouse = codec::load_preset(SOFTTUNE_PRESETS_DIR, "mouse");
+  nlohmann::json mouse = app::load_preset(SOFTTUNE_PRESETS_DIR, "mouse");
   std::ofstream(dir / "mouse.json") << mouse.dump();
   EXPECT_EQ(run_check({dir.string()}), 0);
 

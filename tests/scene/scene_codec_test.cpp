@@ -6,11 +6,14 @@
 #include <filesystem>
 #include <fstream>
 
-#include "codec/preset_loader.h"
+#include "app/preset_store.h"
+#include "app/simulate_app.h"
 #include "codec/problem.h"
 
 namespace softtune::codec {
 namespace {
+
+using namespace softtune::app;
 
 using nlohmann::json;
 namespace fs = std::filesystem;

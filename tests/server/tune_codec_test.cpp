@@ -1,5 +1,7 @@
 #include "codec/tune_codec.h"
 
+#include "app/tune_app.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +14,8 @@ using nlohmann::json;
 using namespace softtune::codec;
 
 namespace {
+
+using softtune::app::run_tune;
 
 json base() { return json::parse(R"({"response_frames": 12, "oscillation": "some", "effective_mass": 2})"); }
 

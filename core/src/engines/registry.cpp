@@ -2,13 +2,25 @@
 #include <array>
 
 #include "softtune/engines/box2d_v2_4.h"
+#include "softtune/engines/bullet.h"
+#include "softtune/engines/mujoco.h"
 #include "softtune/engines/engine_model.h"
+#include "softtune/engines/ode.h"
+#include "softtune/engines/physx.h"
+#include "softtune/engines/jolt.h"
+#include "softtune/engines/rapier.h"
 
 namespace softtune::engines {
 
 std::span<const EngineModel* const> engine_models() {
   static constexpr std::array kModels = {
       &kBox2DV24Model,
+      &kOdeModel,
+      &kPhysxModel,
+      &kBulletModel,
+      &kJoltModel,
+      &kRapierModel,
+      &kMujocoModel,
   };
   return kModels;
 }

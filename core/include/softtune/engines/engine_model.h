@@ -101,6 +101,7 @@ Parameters describe_settings(const EngineModel& model, const SettingValues& valu
 /// achieved_from_poles; spectral radius over all eigenvalues. A non-finite map predicts unstable. A 2x2 map
 /// takes the closed-form eigenvalues (tens of nanoseconds); larger ones Eigen's EigenSolver.
 Prediction predict_from_step_map(const Eigen::MatrixXd& step_map, double dt);
+Prediction predict_from_step_map(const Eigen::Matrix2d& step_map, double dt);  ///< the 2x2 map, no allocation
 
 /// The value of the parameter called `name`, or empty.
 std::optional<double> parameter_value(const Parameters& parameters, std::string_view name);

@@ -1,8 +1,9 @@
-#include "codec/scene_frames.h"
+#include "app/scene_frames.h"
 
 #include <cstdio>
 
-namespace softtune::codec {
+namespace softtune::app {
+
 namespace {
 
 render::Vec2 vec(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
@@ -61,4 +62,4 @@ render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene
   return set;
 }
 
-}  // namespace softtune::codec
+}  // namespace softtune::app

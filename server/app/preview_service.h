@@ -14,7 +14,7 @@
 
 #include "softtune/render/frame_pipeline.h"
 
-namespace softtune::codec {
+namespace softtune::app {
 
 /// What to render: the canonical request text (its hash names the result), the settings, and the
 /// function that simulates and builds the draw model (run only when the result is not cached).
@@ -59,4 +59,4 @@ class PreviewService {
   std::atomic<int> waiters_{0};
 };
 
-}  // namespace softtune::codec
+}  // namespace softtune::app

@@ -1,18 +1,23 @@
-#include "codec/preview_service.h"
+#include "app/preview_service.h"
+
+#include "app/simulate_app.h"
 
 #include <algorithm>
 
 #include "codec/json_reader.h"
 #include "codec/json_writer.h"
-#include "codec/preset_loader.h"
+#include "app/preset_store.h"
 #include "codec/preview_codec.h"
 #include "codec/problem.h"
 #include "codec/scene_codec.h"
-#include "codec/scene_frames.h"
+#include "app/scene_frames.h"
 #include "codec/tune_codec.h"
 #include "softtune/render/oscillator_frames.h"
 
-namespace softtune::codec {
+namespace softtune::app {
+
+using namespace softtune::codec;  // the codec is this layer's JSON vocabulary
+
 namespace {
 
 using nlohmann::json;
@@ -191,4 +196,4 @@ std::optional<std::string> PreviewService::filmstrip_png(const std::string& id) 
   return preview->filmstrip_png;
 }
 
-}  // namespace softtune::codec
+}  // namespace softtune::app

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace softtune::codec {
+namespace softtune::app {
 
 /// The presets directory: `explicit_dir` if given, else $SOFTTUNE_PRESETS, else "presets" (relative to the
 /// current directory).
@@ -27,4 +27,4 @@ nlohmann::json load_preset(const std::string& dir, const std::string& name);
 /// pointer and the rule; `field` carries the JSON pointer.
 void validate_preset(const nlohmann::json& preset, const nlohmann::json& schema, const std::string& file);
 
-}  // namespace softtune::codec
+}  // namespace softtune::app

@@ -8,7 +8,7 @@
 #include "softtune/scene/scene.h"
 #include "softtune/scene/snapshot.h"
 
-namespace softtune::codec {
+namespace softtune::app {
 
 /// One frame: bodies as polygons or circles coloured by role (static, dynamic, probed), springy joints
 /// (distance, wheel, mouse) as springs with their rest length, every joint's anchors as dots, and a
@@ -18,4 +18,4 @@ render::DrawFrame scene_frame(const scene::Scene& scene, const scene::Snapshot& 
 /// Every snapshot as a frame, with the scene's camera (fixed: centre and width in metres).
 render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots);
 
-}  // namespace softtune::codec
+}  // namespace softtune::app

@@ -1,4 +1,4 @@
-#include "codec/preset_loader.h"
+#include "app/preset_store.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -10,7 +10,10 @@
 #include "codec/json_schema.h"
 #include "codec/problem.h"
 
-namespace softtune::codec {
+namespace softtune::app {
+
+using namespace softtune::codec;  // the codec is this layer's JSON vocabulary
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -86,4 +89,4 @@ void validate_preset(const nlohmann::json& preset, const nlohmann::json& schema,
   }
 }
 
-}  // namespace softtune::codec
+}  // namespace softtune::app
