@@ -1,7 +1,7 @@
 // Preview frames: the floor (raster only, PNG only, per frame) and the pipeline against it, in one run.
 // Goal (issue 6): 120 frames at 640x360 cold (not cached) within 1.5x the floor and >= 250 frames/s
 // with two workers; a cached repeat under 20 ms. Run with LP_NUM_THREADS=0/1/2 to compare llvmpipe
-// thread settings (README "Preview frames").
+// thread settings (docs/benchmarks.md, "Preview frames").
 #include <benchmark/benchmark.h>
 
 #include <sys/resource.h>

@@ -7,7 +7,8 @@ import { ApiError, Latest, callJson, debounce, hasRoute, loadRoutes } from './ap
 import { responseSeries } from './oscillator.js';
 import { drawError, drawResponse, drawSimulation, drawWorkPrecision, showUnavailable } from './plots.js';
 import { PreviewPlayer } from './preview.js';
-import { copyText, fmt, formatPercent, showEngines, showNumbers, showStability } from './results.js';
+import { showEngines, watchEngineValues } from './engine_table.js';
+import { copyText, fmt, formatPercent, showNumbers, showStability } from './results.js';
 import {
   OSCILLATION_ZETA, fromQuery, readForm, stateFromScene, toQuery, tuneRequest, tunedScene, tuningFields,
   writeForm,
@@ -261,7 +262,7 @@ async function runAccuracy(request) {
   }
 }
 
-/// The preview contract (README, "Preview frames"): a Box2D preset by name, or the 1-D oscillator with the
+/// The preview contract (docs/preview.md): a Box2D preset by name, or the 1-D oscillator with the
 /// tuning fields of `softtune tune` (a custom body, or the oscillator preset) and the effective mass the
 /// tune answer computed (from the mass or the 2-D constraint). `wait: false` answers at once, so the
 /// progress bar can follow the render.
@@ -369,6 +370,7 @@ async function loadPreset(name, adopt) {
 
 // ---- start ----------------------------------------------------------------------------------------
 
+watchEngineValues(results);
 form.addEventListener('input', onInput);
 form.addEventListener('change', onInput);
 form.addEventListener('submit', (e) => e.preventDefault());

@@ -1,5 +1,5 @@
 // The numbers of a tune response: the constants, requested against achieved, the warnings, a verdict
-// per integrator with a suggested fix, and each engine's settings with a copy button.
+// per integrator with a suggested fix, and the clipboard (web/engine_table.js draws the engines).
 import { METHODS, METHOD_LABELS } from './oscillator.js';
 
 /// Six significant digits, exponent form for very large or small magnitudes; null (undefined in the
@@ -114,39 +114,8 @@ export function showStability(root, tune, fps, substeps) {
   }));
 }
 
-const n = (v) => (v === null || v === undefined ? 'null /* not representable */' : String(v));
-
-/// Engine key -> [display name, settings text to paste]. Numbers at full precision.
-const ENGINES = {
-  box2d_v2_4: ['Box2D 2.4', (e) => [
-    `jointDef.stiffness = ${n(e.stiffness)};  // N/m`,
-    `jointDef.damping = ${n(e.damping)};  // N s/m`,
-    ...(e.b2LinearStiffness?.stiffness != null
-      ? [`// b2LinearStiffness would give stiffness ${e.b2LinearStiffness.stiffness}, damping ${e.b2LinearStiffness.damping}`,
-        `// (reduced mass without rotation: ${fmt(100 * e.b2LinearStiffness.frequency_error)} % frequency error)`]
-      : [])].join('\n')],
-  box2d_v3: ['Box2D v3', (e) => [
-    'def.enableSpring = true;',
-    `def.hertz = ${n(e.hertz)};`,
-    `def.dampingRatio = ${n(e.damping_ratio)};`,
-    `// stays below the joint clamp of 0.25 / h = ${fmt(e.max_hertz)} Hz (headroom ${fmt(e.headroom)}x)`].join('\n')],
-  jolt: ['Jolt', (e) => [
-    `SpringSettings(ESpringMode::FrequencyAndDamping, ${n(e.frequency_and_damping?.frequency)}f, ${n(e.frequency_and_damping?.damping)}f)`,
-    `SpringSettings(ESpringMode::StiffnessAndDamping, ${n(e.stiffness_and_damping?.stiffness)}f, ${n(e.stiffness_and_damping?.damping)}f)`].join('\n')],
-  mujoco: ['MuJoCo', (e) => `solref="${(e.solref ?? []).map(n).join(' ')}"  <!-- ${e.form} form -->`],
-  ode_bullet: ['ODE / Bullet', (e) => [
-    `dJointSetParam(joint, dParamERP, ${n(e.erp)});`,
-    `dJointSetParam(joint, dParamCFM, ${n(e.cfm)});`,
-    `// Bullet: setParam(BT_CONSTRAINT_ERP, ${n(e.erp)}); setParam(BT_CONSTRAINT_CFM, ${n(e.cfm)});`].join('\n')],
-  physx: ['PhysX', (e) => [
-    `PxD6JointDrive(${n(e.acceleration?.stiffness)}f, ${n(e.acceleration?.damping)}f, PX_MAX_F32, true);  // acceleration drive`,
-    `PxD6JointDrive(${n(e.force?.stiffness)}f, ${n(e.force?.damping)}f, PX_MAX_F32, false);  // force drive`].join('\n')],
-  rapier: ['Rapier', (e) => [
-    `.motor_model(axis, MotorModel::AccelerationBased).motor_position(axis, target, ${n(e.acceleration_based?.stiffness)}, ${n(e.acceleration_based?.damping)})`,
-    `.motor_model(axis, MotorModel::ForceBased).motor_position(axis, target, ${n(e.force_based?.stiffness)}, ${n(e.force_based?.damping)})`].join('\n')],
-};
-
-async function copyText(text) {
+/// Puts text on the clipboard; true when it got there.
+export async function copyText(text) {
   try {
     await navigator.clipboard.writeText(text);
     return true;
@@ -165,40 +134,3 @@ async function copyText(text) {
   }
 }
 
-export function showEngines(root, tune) {
-  const body = root.querySelector('#engines tbody');
-  const notes = (tune.warnings ?? []).filter((w) => w.engine);
-  body.replaceChildren(...Object.entries(tune.engines ?? {}).map(([key, e]) => {
-    const [label, snippet] = ENGINES[key] ?? [key, (x) => JSON.stringify(x, null, 1)];
-    const text = snippet(e);
-    const tr = document.createElement('tr');
-    tr.dataset.engine = key;
-    const th = document.createElement('th');
-    th.scope = 'row';
-    th.textContent = label;
-    const td = document.createElement('td');
-    const pre = document.createElement('pre');
-    pre.textContent = text;
-    td.append(pre);
-    for (const w of notes.filter((w) => w.engine === key)) {
-      const p = document.createElement('p');
-      p.className = 'note';
-      p.textContent = w.message;
-      td.append(p);
-    }
-    const copy = document.createElement('td');
-    const button = document.createElement('button');
-    button.type = 'button';
-    button.textContent = 'Copy';
-    button.setAttribute('aria-label', `Copy the ${label} settings`);
-    button.addEventListener('click', async () => {
-      button.textContent = (await copyText(text)) ? 'Copied' : 'Copy failed';
-      setTimeout(() => { button.textContent = 'Copy'; }, 1500);
-    });
-    copy.append(button);
-    tr.append(th, td, copy);
-    return tr;
-  }));
-}
-
-export { copyText };

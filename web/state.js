@@ -68,7 +68,7 @@ function body(state, p) {
   return b;
 }
 
-/// The designer fields shared by the tune request and a scene's soft joints (README "softtune tune").
+/// The designer fields shared by the tune request and a scene's soft joints (docs/api.md, "softtune tune").
 export function tuningFields(state) {
   const t = { response_frames: num(state.frames), basis_fps: num(state.basis), mode: state.mode };
   if (state.osc) t.oscillation = state.osc;

@@ -43,18 +43,15 @@ EngineExport export_engines(const EngineExportInput& in, Warnings& warnings) {
     if (std::abs(error) > 0.01) warnings.push_back({WarningCode::box2d_reduced_mass_error, error, 0.0});
   }
 
-  // Box2D v3 springs take (hertz, dampingRatio) into b2MakeSoft(hertz, zeta, h) (solver.h). Its joints
-  // soften their rigid rows at min(constraintHertz, 0.25 / h) (joint.c b2PrepareJoint: "Clamp joint hertz
-  // based on the time step to reduce jitter"): a spring above that is stiffer than the joint itself.
-  out.box2d_v3.max_hertz = 0.25 / in.h;
+  // Box2D v3 springs take (hertz, dampingRatio) into b2MakeSoft(hertz, zeta, h) at the substep h
+  // (distance_joint.c b2PrepareDistanceJoint), as typed: joint.c b2PrepareJoint clamps only the joint's
+  // rigid rows (min(constraintHertz, 0.25 / h)), so no clamp applies to a spring (max_hertz, headroom
+  // stay +infinity). b2MakeSoft divides by 2 zeta + h omega; the box2d_v3 model checks that at the
+  // engine's substep.
   if (modal && 2.0 * modal->zeta + in.h * modal->omega > 0.0) {
     const double hertz = frequency_from_angular(modal->omega);
     out.box2d_v3.hertz = hertz;
     out.box2d_v3.damping_ratio = modal->zeta;
-    out.box2d_v3.headroom = out.box2d_v3.max_hertz / hertz;
-    if (hertz > out.box2d_v3.max_hertz) {
-      warnings.push_back({WarningCode::box2d_v3_clamped, hertz, out.box2d_v3.max_hertz});
-    }
   } else if (s.stiffness != 0.0 || s.damping != 0.0) {
     warnings.push_back({WarningCode::engine_note, 0.0, 0.0, "box2d_v3"});
   }

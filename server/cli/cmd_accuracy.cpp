@@ -1,4 +1,4 @@
-// `softtune accuracy`: the work-precision report (contract: README.md, "Accuracy and stability").
+// `softtune accuracy`: the work-precision report (contract: docs/accuracy-and-stability.md).
 #include <iostream>
 #include <sstream>
 

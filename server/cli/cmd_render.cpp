@@ -1,4 +1,4 @@
-// `softtune render`: preview frames of a preset as PNG files (contract: README.md, "Preview frames").
+// `softtune render`: preview frames of a preset as PNG files (contract: docs/preview.md).
 #include <filesystem>
 #include <fstream>
 #include <iostream>

@@ -1,4 +1,4 @@
-// `softtune serve`: the HTTP API and the page (README.md, "HTTP API"). Runs until SIGINT or SIGTERM,
+// `softtune serve`: the HTTP API and the page (docs/api.md, "HTTP API"). Runs until SIGINT or SIGTERM,
 // then finishes the requests in flight and exits 0.
 #include <pthread.h>
 #include <signal.h>

@@ -1,4 +1,4 @@
-// `softtune stability`: the extreme-case sweep (contract: README.md, "Accuracy and stability").
+// `softtune stability`: the extreme-case sweep (contract: docs/accuracy-and-stability.md).
 #include <iostream>
 
 #include "app/stability_app.h"

@@ -1,4 +1,4 @@
-// `softtune tune`: designer request in, solver numbers out (contract: README.md, "tune").
+// `softtune tune`: designer request in, solver numbers out (contract: docs/api.md, "softtune tune").
 #include <iostream>
 
 #include "cli/cli_io.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The accuracy contract (`softtune accuracy`, later POST /api/v1/accuracy): a tune request plus the
-// report's own fields in, the work-precision report out as JSON, CSV or SVG. Field list: README.md,
-// "Accuracy and stability".
+// report's own fields in, the work-precision report out as JSON, CSV or SVG. Field list:
+// docs/accuracy-and-stability.md, "softtune accuracy".
 
 #include <nlohmann/json.hpp>
 #include <optional>

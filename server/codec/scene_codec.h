@@ -1,6 +1,6 @@
 #pragma once
 // JSON <-> softtune::scene types: the scene documents of presets and requests, and a run's answer.
-// Field list: README.md, "Scenes and presets".
+// Field list: docs/scenes.md.
 
 #include <nlohmann/json.hpp>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // The stability contract (`softtune stability`, later GET|POST /api/v1/stability): no request = the
-// default sweep; a request narrows or widens the grid. Field list: README.md, "Accuracy and stability".
+// default sweep; a request narrows or widens the grid. Field list: docs/accuracy-and-stability.md.
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
@@ -13,7 +13,7 @@
 
 namespace softtune::codec {
 
-/// Request caps (also in openapi.json's x-softtune-limits and README "Limits").
+/// Request caps (also in openapi.json's x-softtune-limits and docs/limits-and-security.md "Limits").
 inline constexpr std::size_t kMaxGridEntries = 32;  ///< entries of each list
 inline constexpr std::size_t kMaxCases = 200000;    ///< product of the sweep lists
 inline constexpr int kMinObserveSteps = 1000, kMaxObserveSteps = 100000;

@@ -15,7 +15,7 @@ TuneRequest decode_tune_request(const nlohmann::json& doc);
 /// the caller calls finish(). Validates.
 TuneRequest read_tune_fields(ObjectReader& r);
 
-/// The response object (field list in README.md, "tune").
+/// The response object (field list: docs/api.md, "softtune tune").
 nlohmann::json encode_tune_result(const TuneRequest& request, const TuneResult& result);
 
 

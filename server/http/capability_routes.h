@@ -1,6 +1,6 @@
 #pragma once
 // Handlers of the capabilities shared with the CLI beyond tune: simulate, presets, accuracy and
-// stability (README.md, "HTTP API"). Each runs the same codec function as its CLI command, so one
+// stability (docs/api.md, "HTTP API"). Each runs the same codec function as its CLI command, so one
 // request gives the same JSON on both.
 
 #include "http/service.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Every limit of the HTTP service, named once. README.md "Limits" and the OpenAPI document
+// Every limit of the HTTP service, named once. docs/limits-and-security.md "Limits" and the OpenAPI document
 // (info.x-softtune-limits) list the same numbers; tests/http/openapi_test.cpp checks that they agree.
 
 #include <chrono>

@@ -1,5 +1,5 @@
 // The render pool: caps, content-hash naming, the cache, progress, failures, concurrency, and that no
-// GL context exists until frames are asked for. Also built under ThreadSanitizer (README).
+// GL context exists until frames are asked for. Also built under ThreadSanitizer (docs/testing.md).
 #include "softtune/render/frame_pipeline.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,7 @@
 // The designer page end to end in real headless Chromium against a real `softtune serve`: the numbers
 // shown equal the API's, moving the frames slider and the oscillation choice updates numbers, plots and
-// preview, a shared URL restores the tuning, an API error shows next to its field, no console errors, and
+// preview, the engine table shows each engine's prediction and copies its code, a shared URL restores the
+// tuning, an API error shows next to its field, no console errors, and
 // screenshots at 1280x800 and on a narrow window.
 //
 // Run (ctest does this as web.e2e): SOFTTUNE_BIN=build/softtune SOFTTUNE_WEB=web \
@@ -141,7 +142,7 @@ test('the page shows the API numbers, follows the controls, restores a shared UR
   let tune = await expectNumbers(page, defaults);
   assert.equal(await page.getByTestId('requested-frequency').getAttribute('data-value'), String(tune.requested.frequency_hz));
   assert.equal(await page.locator('#stability tbody tr').count(), 5, 'a verdict per integrator');
-  assert.ok(await page.locator('#engines tbody tr').count() >= 7, 'the engine export table');
+  assert.ok(await page.locator('#engines tr.engine').count() >= 7, 'the engine export table');
   for (const id of ['plot-response', 'plot-error']) {
     assert.ok(Number(await page.getByTestId(id).getAttribute('data-points')) > 10, `${id} has data`);
   }
@@ -153,11 +154,30 @@ test('the page shows the API numbers, follows the controls, restores a shared UR
   // The response plot: the exact motion and the five methods.
   assert.equal(await page.getByTestId('plot-response').locator('.u-legend .u-series').count(), 7);
 
-  // Each engine's copy button puts its settings, at full precision, on the clipboard.
-  await page.locator('#engines tr[data-engine="box2d_v2_4"] button').click();
-  const copied = await page.evaluate(() => navigator.clipboard.readText());
-  assert.ok(copied.includes(`jointDef.stiffness = ${tune.engines.box2d_v2_4.stiffness};`), copied);
-  assert.ok(copied.includes(`jointDef.damping = ${tune.engines.box2d_v2_4.damping};`), copied);
+  // The engine table: a row per engine the answer carries; Box2D 2.4's row shows what its model predicts.
+  for (const key of Object.keys(tune.engines).filter((k) => tune.engines[k].parameters && k !== 'ode_bullet')) {
+    assert.equal(await page.locator(`#engines tr.engine[data-engine="${key}"]`).count(), 1, `a row for ${key}`);
+  }
+  const box2d = page.locator('#engines tr.engine[data-engine="box2d_v2_4"]');
+  const b2 = tune.engines.box2d_v2_4;
+  assert.equal(Number(await box2d.getByTestId('predicted-frequency').getAttribute('data-value')), b2.predicted.frequency_hz);
+  assert.equal(Number(await box2d.getByTestId('exact-frequency').getAttribute('data-value')), b2.exact_predicted.frequency_hz);
+  // Its copy button puts Box2D code with the answer's values, at full precision, on the clipboard: the exact
+  // values first, softtune's plain stiffness and damping on the toggle; the code shown is the code copied.
+  const copy = async () => {
+    await box2d.locator('button').click();
+    return page.evaluate(() => navigator.clipboard.readText());
+  };
+  let copied = await copy();
+  assert.ok(copied.includes(`jd.stiffness = ${b2.exact['b2DistanceJointDef::stiffness']}f;`), copied);
+  await page.getByLabel(/plain values/).check();
+  copied = await copy();
+  assert.ok(copied.includes('b2DistanceJointDef jd;'), copied);
+  assert.ok(copied.includes(`jd.stiffness = ${b2.stiffness}f;`), copied);
+  assert.ok(copied.includes(`jd.damping = ${b2.damping}f;`), copied);
+  assert.equal(await page.locator('#engines tr.snippet[data-engine="box2d_v2_4"] pre').textContent(), copied);
+  for (const text of await page.locator('#engines pre').allTextContents()) assert.doesNotMatch(text, /NaN|undefined/, text);
+  await page.getByLabel(/exact values/).check();
 
   const responseBefore = await canvas(page, 'plot-response');
   const errorBefore = await canvas(page, 'plot-error');

@@ -28,7 +28,7 @@ test('a query holds only what differs from the defaults and restores it', () => 
   assert.ok(!('bogus' in fromQuery('bogus=1', DEFAULTS)));
 });
 
-test('the tune request of the default state is what the README documents, and the codec accepts it', () => {
+test('the tune request of the default state is what docs/api.md documents, and the codec accepts it', () => {
   assert.deepEqual(tuneRequest(DEFAULTS), { fps: 60, substeps: 1, response_frames: 12, basis_fps: 60, mode: 'standard',
     oscillation: 'some', effective_mass: 1 });
   const r = tune(tuneRequest(DEFAULTS));

@@ -12,7 +12,7 @@
 namespace softtune {
 
 /// Spectral radii within this distance of 1 are "marginal": bounded in exact arithmetic (e.g. semi-implicit
-/// Euler undamped) but indistinguishable from slow growth in floating point. Documented in the README.
+/// Euler undamped) but indistinguishable from slow growth in floating point. Documented in docs/math.md.
 inline constexpr double kMarginalBand = 1e-9;
 
 enum class Verdict { stable, marginal, unstable };

@@ -2,6 +2,7 @@
 // The same tuning in the units each engine's API takes. Each engine's convention is cited where it is
 // computed (src/engine_export.cpp).
 
+#include <limits>
 #include <optional>
 
 #include "softtune/softness.h"
@@ -27,13 +28,19 @@ struct Box2D24Export {
   std::optional<double> linear_stiffness_frequency_error;  ///< relative error of the resulting frequency
 };
 
-/// Box2D v3 joints take hertz and a damping ratio (b2DistanceJointDef::hertz, ::dampingRatio) and clamp
-/// joint stiffness to a quarter of the substep rate (b2_jointSoftness / contactHertz in b2World).
+/// Box2D v3 joints take hertz and a damping ratio (b2DistanceJointDef::hertz, ::dampingRatio). The spring's
+/// hertz goes to b2MakeSoft as typed: Box2D v3 clamps only a joint's rigid rows (constraintHertz, to a
+/// quarter of the substep rate, joint.c b2PrepareJoint), never a spring (distance_joint.c
+/// b2PrepareDistanceJoint). What v3 does with these numbers (substeps, the relax stage) is the
+/// box2d_v3 engine model's report (engines/box2d_v3.h).
 struct Box2DV3Export {
   std::optional<double> hertz;          ///< Hz; empty when k', c' have no (hertz, ratio) form
   std::optional<double> damping_ratio;
-  double max_hertz = 0.0;               ///< Hz, 0.25 / h
-  double headroom = 0.0;                ///< max_hertz / hertz (> 1 means no clamp)
+  /// Hz, the highest spring hertz Box2D v3 takes unchanged: none, +infinity (JSON null). Kept for
+  /// readers of the field, which once held a 0.25 / h clamp that does not apply to springs.
+  double max_hertz = std::numeric_limits<double>::infinity();
+  /// max_hertz / hertz: +infinity (JSON null), no clamp to approach.
+  double headroom = std::numeric_limits<double>::infinity();
 };
 
 /// Jolt SpringSettings: FrequencyAndDamping (mFrequency Hz, mDamping ratio) or StiffnessAndDamping

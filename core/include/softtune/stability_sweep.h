@@ -55,7 +55,7 @@ struct SweepSettings {
   int observe_steps = 1000;              ///< N, at least 1000
 };
 
-/// The default sweep (README "Accuracy and stability"): f h from 0.001 to 2, zeta in {0, 1e-3, 0.1, 0.5,
+/// The default sweep (docs/accuracy-and-stability.md): f h from 0.001 to 2, zeta in {0, 1e-3, 0.1, 0.5,
 /// 1, 10, 1000}, mass 1e-6..1e6 kg, stiffness 1..1e12 N/m, h 1e-6..0.1 s, every method.
 SweepSettings default_sweep_settings();
 

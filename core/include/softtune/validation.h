@@ -1,5 +1,6 @@
 #pragma once
-// Input ranges for every request field. Each limit is named once here and documented in the README.
+// Input ranges for every request field. Each limit is named once here and documented in docs/api.md
+// and docs/limits-and-security.md.
 
 #include <optional>
 #include <string>

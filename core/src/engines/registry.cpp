@@ -4,6 +4,7 @@
 #include "softtune/engines/box2d_v2_4.h"
 #include "softtune/engines/bullet.h"
 #include "softtune/engines/mujoco.h"
+#include "softtune/engines/box2d_v3.h"
 #include "softtune/engines/engine_model.h"
 #include "softtune/engines/ode.h"
 #include "softtune/engines/physx.h"
@@ -14,13 +15,8 @@ namespace softtune::engines {
 
 std::span<const EngineModel* const> engine_models() {
   static constexpr std::array kModels = {
-      &kBox2DV24Model,
-      &kOdeModel,
-      &kPhysxModel,
-      &kBulletModel,
-      &kJoltModel,
-      &kRapierModel,
-      &kMujocoModel,
+      &kBox2DV24Model, &kBox2DV3Model, &kJoltModel, &kMujocoModel,
+      &kOdeModel,      &kBulletModel,  &kPhysxModel, &kRapierModel,
   };
   return kModels;
 }

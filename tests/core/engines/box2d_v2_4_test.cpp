@@ -78,3 +78,38 @@ TEST(Box2DV24Model, ASpringTheEngineTurnsRigidIsReportedNotPredicted) {
 
 }  // namespace
 }  // namespace softtune::engines
+
+namespace softtune::engines {
+namespace {
+
+TEST(Box2DV24Model, MouseJointOnARotatingBody) {
+  // Without rotation the mouse joint's map is the distance joint's (implicit Euler) on (x, u_t).
+  const double m = 2.0, k = 300.0, d = 3.0, h = 1.0 / 60.0;
+  const Eigen::Matrix3d point = box2d_v2_4_mouse_step_map(m, k, d, h, 0.0);
+  const Eigen::Matrix2d ie = box2d_v2_4_step_map(m, k, d, h);
+  EXPECT_LT((point.topLeftCorner<2, 2>() - ie).norm(), 1e-12);
+  // With rotation, the 0.98 multiplies the rotation's share of the anchor velocity before the solve: one
+  // step from (0, 0, u_r) with no spring force keeps 0.98 u_r of it in x's velocity... then the soft solve.
+  const double a = 0.5, gi = 1.0 / (h * (d + h * k)), soft = 1.0 / (1.0 / m + gi);
+  const Eigen::Matrix3d plank = box2d_v2_4_mouse_step_map(m, k, d, h, a);
+  const double u = 0.98;                 // Cdot after InitVelocityConstraints for u_r = 1
+  const double p = -soft * u;            // the impulse (warm start cancels)
+  EXPECT_NEAR(plank(1, 2), (1.0 - a) * p / m, 1e-12);
+  EXPECT_NEAR(plank(2, 2), 0.98 + a * p / m, 1e-12);
+  EXPECT_NEAR(plank(0, 2), h * (u + p / m), 1e-12);
+  // At low frequency the third mode carries much of the stretch: the model warns and gives no exact.
+  Target t;
+  t.effective_mass = 1.0;
+  t.omega = 2.0 * std::numbers::pi * 0.6;
+  t.damping_ratio = 0.3;
+  t.dt = 1.0 / 240.0;
+  t.spring = spring_constants(1.0, t.omega, 0.3);
+  const EngineReport r = kBox2DV24Model.report(t, {2, 8, 0.5});
+  EXPECT_FALSE(r.exact);
+  EXPECT_GT(box2d_v2_4_mouse_third_mode_weight(1.0, t.spring.stiffness, t.spring.damping, t.dt, 0.5),
+            kBox2DV24MouseThirdModeLimit);
+  EXPECT_EQ((*parameter_value(r.parameters, "b2MouseJointDef::maxForce")), kBox2DV24MouseMaxForce);
+}
+
+}  // namespace
+}  // namespace softtune::engines

@@ -1,6 +1,7 @@
 #pragma once
 // PNG encoding with libpng. Frames are opaque, so the alpha byte is dropped (RGB, 25 % less to deflate).
-// Defaults: zlib level 1 with the UP filter, measured in bench/render_bench.cpp (README "Preview frames").
+// Defaults: zlib level 1 with the UP filter, measured in bench/render_bench.cpp (docs/benchmarks.md,
+// "Preview frames").
 
 #include <cstdint>
 #include <span>

@@ -14,10 +14,10 @@ namespace softtune::render {
 
 struct RendererOptions {
   /// 0: one-pixel alpha fringes on every edge (analytic anti-aliasing, single sample);
-  /// 4: 4x multisampling with hard edges. README "Preview frames" gives the measured costs.
+  /// 4: 4x multisampling with hard edges. docs/benchmarks.md "Preview frames" gives the measured costs.
   int msaa_samples = 0;
   /// llvmpipe rasterizer threads (LP_NUM_THREADS) when the environment does not set it: 0 rasterizes on
-  /// the calling thread, fastest with one render worker per core (README "Preview frames").
+  /// the calling thread, fastest with one render worker per core (docs/benchmarks.md, "Preview frames").
   int llvmpipe_threads = 0;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// Ranges of every scene field (README, "Scenes and presets"). Designer fields use core/validation.h.
+// Ranges of every scene field (docs/scenes.md). Designer fields use core/validation.h.
 
 #include <cstddef>
 

@@ -1,0 +1,93 @@
+# The docs' own checks (issue 14, STYLE.md "Docs beside code"), run by ctest as docs.readme:
+#   cmake -DSOURCE_DIR=<source root> -P tests/docs/readme_check.cmake
+# 1. README.md is a front door: under 150 lines (kMaxReadmeLines below).
+# 2. Every relative link in README.md and docs/*.md -- [text](target) and ![alt](target) -- names a file or
+#    folder that exists, relative to the page that holds it; a link with a #fragment must name a heading of
+#    its target page (GitHub's anchors: lower case, punctuation dropped, spaces as hyphens). Links in code
+#    spans are not links. Absolute URLs (http:, https:, mailto:) are not checked. Links to the engine pages
+#    (docs/engines/<engine>.md) are required like any other: the pages land with the engine rooms.
+cmake_minimum_required(VERSION 3.25)
+if(NOT SOURCE_DIR)
+  get_filename_component(SOURCE_DIR "${CMAKE_CURRENT_LIST_DIR}/../.." ABSOLUTE)
+endif()
+set(kMaxReadmeLines 150)
+set(failures "")
+
+# Line count: newlines, plus a last line without one.
+file(READ "${SOURCE_DIR}/README.md" readme)
+string(REGEX MATCHALL "\n" newlines "${readme}")
+list(LENGTH newlines readme_lines)
+if(NOT readme MATCHES "\n$" AND NOT readme STREQUAL "")
+  math(EXPR readme_lines "${readme_lines} + 1")
+endif()
+if(NOT readme_lines LESS kMaxReadmeLines)
+  list(APPEND failures "README.md has ${readme_lines} lines, it must stay under ${kMaxReadmeLines} (topics go to docs/)")
+endif()
+
+# The GitHub anchor of every heading of a page, into the variable named by out.
+function(page_anchors page out)
+  file(STRINGS "${page}" headings REGEX "^#+ ")
+  set(anchors "")
+  foreach(h IN LISTS headings)
+    string(REGEX REPLACE "^#+ +" "" h "${h}")
+    string(TOLOWER "${h}" h)
+    string(REGEX REPLACE "[^a-z0-9 _-]" "" h "${h}")
+    string(REPLACE " " "-" h "${h}")
+    list(APPEND anchors "${h}")
+  endforeach()
+  set(${out} "${anchors}" PARENT_SCOPE)
+endfunction()
+
+file(GLOB pages "${SOURCE_DIR}/docs/*.md")
+list(PREPEND pages "${SOURCE_DIR}/README.md")
+set(checked 0)
+foreach(page IN LISTS pages)
+  file(RELATIVE_PATH page_name "${SOURCE_DIR}" "${page}")
+  get_filename_component(page_dir "${page}" DIRECTORY)
+  file(READ "${page}" text)
+  # CMake lists split on ';' and an unbalanced '[' or ']' joins their elements: neutralise both before
+  # matching, keeping "](" as the mark of a link.
+  string(REPLACE ";" "<semicolon>" text "${text}")
+  string(REGEX REPLACE "`[^`\n]*`" "" text "${text}")
+  string(REPLACE "](" "<link>(" text "${text}")
+  string(REPLACE "[" "<" text "${text}")
+  string(REPLACE "]" ">" text "${text}")
+  string(REGEX MATCHALL "<link>\\([^)\n]+\\)" links "${text}")
+  foreach(link IN LISTS links)
+    string(REGEX REPLACE "^<link>\\(([^)]+)\\)$" "\\1" target "${link}")
+    string(REGEX REPLACE " +\"[^\"]*\"$" "" target "${target}")  # an optional "title"
+    string(REGEX REPLACE "^<(.*)>$" "\\1" target "${target}")
+    if(target MATCHES "^(https?|mailto):")
+      continue()
+    endif()
+    math(EXPR checked "${checked} + 1")
+    set(fragment "")
+    if(target MATCHES "#")
+      string(REGEX REPLACE "^[^#]*#" "" fragment "${target}")
+      string(REGEX REPLACE "#.*$" "" target "${target}")
+    endif()
+    if(target STREQUAL "")
+      set(path "${page}")
+    else()
+      get_filename_component(path "${page_dir}/${target}" ABSOLUTE)
+    endif()
+    if(NOT EXISTS "${path}")
+      list(APPEND failures "${page_name}: link to ${target} names no file")
+      continue()
+    endif()
+    if(NOT fragment STREQUAL "" AND path MATCHES "\\.md$")
+      page_anchors("${path}" anchors)
+      if(NOT fragment IN_LIST anchors)
+        list(APPEND failures "${page_name}: link to ${target}#${fragment} names no heading of that page")
+      endif()
+    endif()
+  endforeach()
+endforeach()
+
+if(failures)
+  foreach(f IN LISTS failures)
+    message("docs check: ${f}")
+  endforeach()
+  message(FATAL_ERROR "docs check failed")
+endif()
+message(STATUS "docs check: README.md ${readme_lines} lines, ${checked} relative links in README.md and docs/*.md all resolve")
