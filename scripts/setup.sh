@@ -15,6 +15,7 @@ packages=(
   libmujoco-dev                      # engines/mujoco, tests/engines/mujoco: MuJoCo 2.2.2
   libosmesa6-dev libpng-dev          # render: off-screen frames, PNG
   libcpp-httplib-dev                 # server: HTTP
+  libssl-dev                         # render: SHA-256 of preview names (OpenSSL libcrypto, EVP)
   chromium                           # browser tests
   wrk                                # bench: HTTP load
   clang-14 libclang-rt-14-dev python3  # security: libFuzzer harnesses, attack suite

@@ -105,7 +105,8 @@ bool PreviewJob::wait_for(int timeout_ms) const {
   return state_->cv.wait_for(lock, std::chrono::milliseconds(timeout_ms), [this] { return state_->finished; });
 }
 
-FramePipeline::FramePipeline(PipelineOptions options) : options_(std::move(options)), cache_(options_.cache_bytes) {
+FramePipeline::FramePipeline(PipelineOptions options)
+    : options_(std::move(options)), cache_(support::LruBounds{.max_bytes = options_.cache_bytes}) {
   if (!options_.make_renderer) {
     const RendererOptions ro = options_.renderer;
     options_.make_renderer = [ro] { return make_osmesa_renderer(ro); };

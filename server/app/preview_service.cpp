@@ -73,7 +73,7 @@ void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::M
   auto stages = plan.prepare_stages;
   plan.make_frames = [scene, options, frames, stages] {
     const scene::SceneResult result = scene::run_scene(scene, options);
-    for (int i = 0; i < result.stages.count; ++i) stages->add(result.stages.items[i]);
+    stages->append(result.stages);
     if (result.error) throw invalid_field(result.error->field, result.error->rule);
     if (result.snapshots.empty()) throw invalid_field("scene", "has no bodies to draw (an oscillator-only scene: "
                                                               "ask with its tune fields instead)");
@@ -171,8 +171,7 @@ json PreviewService::start(const json& request, const std::string& presets_dir, 
   if (!job->from_cache() && p.finished && !p.failed) {
     // The stages that ran this time: the simulation, then rendering.
     StageList all = *plan.prepare_stages;
-    const StageList& render_stages = job->wait()->stages;
-    for (int i = 0; i < render_stages.count; ++i) all.add(render_stages.items[i]);
+    all.append(job->wait()->stages);
     out["stages"] = stages_json(all);
   }
   out["warnings"] = plan.warnings;

@@ -2,7 +2,8 @@
 // Preview frames for a request: {"preset": NAME} or {"scene": {...}} (a Box2D scene, drawn from its
 // snapshots), or tune fields (the 1-D oscillator with its analytic ghost), plus "frames", "size",
 // "filmstrip_every", "mass_model" and "wait". One long-lived frame pipeline serves every request; its
-// workers create their GL contexts only when the first frame is asked for.
+// workers start their raster processes (softtune-raster, which hold the GL contexts) only when the first
+// frame is asked for, and end them when idle (render::PipelineOptions::release_renderer_after_ms).
 
 #include <atomic>
 #include <memory>
@@ -48,7 +49,7 @@ class PreviewService {
   std::optional<std::string> frame_png(const std::string& id, int n);
   std::optional<std::string> filmstrip_png(const std::string& id);
 
-  render::CacheStats cache_stats() const { return pipeline_.cache_stats(); }
+  support::LruStats cache_stats() const { return pipeline_.cache_stats(); }
 
  private:
   nlohmann::json answer(const render::PreviewJob& job, const std::string& url_prefix) const;

@@ -20,7 +20,7 @@ nlohmann::json warnings_json(const Warnings& warnings) {
 
 nlohmann::json stages_json(const StageList& stages) {
   nlohmann::json out = nlohmann::json::array();
-  for (int i = 0; i < stages.count; ++i) out.push_back(stage_name(stages.items[i]));
+  for (Stage s : stages.items) out.push_back(stage_name(s));
   return out;
 }
 

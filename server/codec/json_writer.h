@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "softtune/diagnostics.h"
 #include "softtune/engines/engine_model.h"
-#include "softtune/tune.h"
 #include "softtune/warnings.h"
 
 namespace softtune::codec {

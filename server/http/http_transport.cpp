@@ -1,5 +1,12 @@
-// The one file that includes cpp-httplib. Debian's 0.11.4 is a compiled library, so its CPPHTTPLIB_*
-// macros do nothing here; everything is set at run time. Its gaps, and how each is closed:
+// The transport's glue to httplib::Server: the library accepts connections and parses requests; the
+// ConnectionGate holds each connection until its head is complete; a worker then serves it on a
+// LimitedStream (transport_stream.h); the library's hooks hand plain HttpRequests to the Service and
+// answers that no handler writes to the refusal writer (transport_refusals.h); each answered request
+// gets one log line and one metrics sample here. Only the transport's files (this one,
+// transport_stream.* and transport_refusals.*) include cpp-httplib; tests/http checks it.
+//
+// Debian's cpp-httplib 0.11.4 is a compiled library, so its CPPHTTPLIB_* macros do nothing here;
+// everything is set at run time. Its gaps, and how each is closed:
 //  - Nagle + delayed ACK cost ~40 ms per keep-alive request: TCP_NODELAY on every connection.
 //  - The payload limit skips chunked bodies and gzip bodies inflate without a limit: the pre-routing
 //    hook refuses Transfer-Encoding, Content-Encoding and bodies without Content-Length, before the
@@ -12,46 +19,42 @@
 //    the connections it holds, the heads waiting for a worker (503 above) and the time to send a head
 //    (408); a worker bounds the time left for the body and the head's bytes (431), and hands an idle
 //    keep-alive connection back to the gate.
+//
+// Library internals this file relies on, beyond the public API, all of 0.11.4 (the version
+// server/CMakeLists.txt pins; check each one before moving to another version):
+//  - Server::process_and_close_socket (a private virtual): overridden so that an accepted socket goes
+//    to the gate instead of a library thread.
+//  - Server::process_request(Stream&, close_connection, connection_closed, setup) (protected): called to
+//    serve one request from our stream; with close_connection it answers with "Connection: close".
+//  - Server::svr_sock_ (protected): the listening socket, listened on again with SOMAXCONN since the
+//    library's backlog is a compiled-in 5.
+//  - Server::new_task_queue called once per listen, and TaskQueue::enqueue called on the accept thread
+//    with a task that runs process_and_close_socket(sock), and TaskQueue::shutdown() on stop: the gate
+//    is created with the queue and enqueue runs the task inline.
+//  - The order of the hooks for one request: the head is read through the stream, then the
+//    100-continue handler (when asked), then the pre-routing handler, then the body, then the route
+//    handler; the error handler runs with the library's own status and an empty body; the logger runs
+//    once after each answer.
 
 #include "http/http_transport.h"
 
-#include <arpa/inet.h>
 #include <httplib.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
-#include <poll.h>
 #include <sys/socket.h>
-#include <unistd.h>
 
-#include <array>
-#include <cerrno>
-#include <condition_variable>
 #include <cstdio>
-#include <deque>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
-#include <vector>
 
-#include "codec/problem.h"
 #include "http/connection_gate.h"
-#include "http/request_policy.h"
+#include "http/transport_refusals.h"
+#include "http/transport_stream.h"
 
 namespace softtune::http {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = TransportClock;
 
-// What the hooks of one connection share while a worker serves it, reached through a thread-local
-// pointer from the library's callbacks.
-struct ConnectionState {
-  Clock::time_point request_start;
-  std::size_t head_bytes = 0;  ///< request line and header bytes consumed so far
-  bool head_done = false;      ///< the pre-routing hook ran: what follows is body
-  bool head_overflow = false;  ///< the head outgrew limits::kMaxHeaderBytes
-  bool close_after = false;    ///< answer, then close (the body was left unread)
-  std::string_view route;      ///< the route pattern that answered (metrics label), empty if none ran
-};
 thread_local ConnectionState* t_connection = nullptr;
 
 // How long a worker waits for the next request on a keep-alive connection before handing it back to
@@ -59,169 +62,6 @@ thread_local ConnectionState* t_connection = nullptr;
 // and serving it here saves two thread hand-offs. Checked in slices, so waiting requests cut it short.
 constexpr std::chrono::microseconds kKeepAliveGrace{2000};
 constexpr std::chrono::microseconds kGraceSlice{200};
-// Response bytes collected before a send (see LimitedStream::write).
-constexpr std::size_t kWriteBufferBytes = 64 * 1024;
-
-int remaining_ms(Clock::time_point deadline) {
-  const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
-  return left <= 0 ? 0 : static_cast<int>(left);
-}
-
-// >0 ready, 0 timed out, <0 error.
-int wait_for(int sock, short events, int timeout_ms) {
-  pollfd p{sock, events, 0};
-  for (;;) {
-    const int n = ::poll(&p, 1, timeout_ms);
-    if (n < 0 && errno == EINTR) continue;
-    return n;
-  }
-}
-
-void peer_address(int sock, bool local, std::string& ip, int& port) {
-  sockaddr_storage addr{};
-  socklen_t len = sizeof addr;
-  const int rc = local ? ::getsockname(sock, reinterpret_cast<sockaddr*>(&addr), &len)
-                       : ::getpeername(sock, reinterpret_cast<sockaddr*>(&addr), &len);
-  if (rc != 0) return;
-  char buf[INET6_ADDRSTRLEN] = {};
-  if (addr.ss_family == AF_INET) {
-    const auto* a = reinterpret_cast<const sockaddr_in*>(&addr);
-    ::inet_ntop(AF_INET, &a->sin_addr, buf, sizeof buf);
-    port = ntohs(a->sin_port);
-  } else if (addr.ss_family == AF_INET6) {
-    const auto* a = reinterpret_cast<const sockaddr_in6*>(&addr);
-    ::inet_ntop(AF_INET6, &a->sin6_addr, buf, sizeof buf);
-    port = ntohs(a->sin6_port);
-  }
-  ip = buf;
-}
-
-// A socket stream that starts with the bytes the gate already read, whose reads share one deadline per
-// request and count the head's bytes.
-class LimitedStream final : public httplib::Stream {
- public:
-  LimitedStream(int sock, ConnectionState& state, const TransportOptions& options, std::string received)
-      : sock_(sock), state_(state), options_(options), buffer_(std::move(received)) {}
-
-  void start_request(Clock::time_point first_byte) {
-    state_ = ConnectionState{};
-    state_.request_start = first_byte;
-    deadline_ = first_byte + options_.request_read_timeout;
-  }
-  bool has_buffered() const { return begin_ < buffer_.size(); }
-  bool head_buffered() const { return head_complete(std::string_view(buffer_).substr(begin_)); }
-  std::string take_buffered() {
-    std::string rest = buffer_.substr(begin_);
-    buffer_.clear();
-    begin_ = 0;
-    return rest;
-  }
-  // Appends what has arrived, waiting up to `wait` for something; false when the client closed or the
-  // socket failed.
-  bool read_for(std::chrono::microseconds wait) {
-    pollfd p{sock_, POLLIN, 0};
-    const timespec t{0, static_cast<long>(std::chrono::nanoseconds(wait).count())};
-    const int ready = ::ppoll(&p, 1, &t, nullptr);
-    if (ready < 0) return errno == EINTR;
-    if (ready == 0) return true;
-    return receive() > 0;
-  }
-
-  bool is_readable() const override {
-    if (has_buffered()) return true;
-    if (!out_.empty() && !flush()) return false;
-    return wait_for(sock_, POLLIN, remaining_ms(deadline_)) > 0;
-  }
-  bool is_writable() const override {
-    return wait_for(sock_, POLLOUT, static_cast<int>(options_.write_timeout.count())) > 0;
-  }
-
-  // Reads try the socket first and wait only when it has nothing: one system call per read, not two.
-  ssize_t read(char* ptr, size_t size) override {
-    if (!has_buffered()) {
-      if (!out_.empty() && !flush()) return -1;
-      ssize_t n = receive();
-      if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-        if (wait_for(sock_, POLLIN, remaining_ms(deadline_)) <= 0) return -1;
-        n = receive();
-      }
-      if (n <= 0) return n;
-    }
-    std::size_t n = std::min(size, buffer_.size() - begin_);
-    if (!state_.head_done) {
-      if (state_.head_bytes + n > limits::kMaxHeaderBytes) {
-        state_.head_overflow = true;
-        return -1;
-      }
-      state_.head_bytes += n;
-    }
-    std::copy_n(buffer_.data() + begin_, n, ptr);
-    begin_ += n;
-    return static_cast<ssize_t>(n);
-  }
-
-  // The library writes a response's head and body separately; collecting them and sending once after
-  // the request (flush()) saves a system call and a TCP segment per response. Large bodies go out as
-  // the buffer fills, and anything pending goes out before the stream waits to read (100-continue).
-  ssize_t write(const char* ptr, size_t size) override {
-    out_.append(ptr, size);
-    if (out_.size() >= kWriteBufferBytes && !flush()) return -1;
-    return static_cast<ssize_t>(size);
-  }
-
-  bool flush() const {
-    std::size_t sent = 0;
-    while (sent < out_.size()) {
-      ssize_t n = ::send(sock_, out_.data() + sent, out_.size() - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
-      if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-        if (wait_for(sock_, POLLOUT, static_cast<int>(options_.write_timeout.count())) <= 0) break;
-        continue;
-      }
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;
-      sent += static_cast<std::size_t>(n);
-    }
-    const bool all = sent == out_.size();
-    out_.clear();
-    return all;
-  }
-
-  // The library asks for both addresses on every request; they do not change, so ask the kernel once.
-  void get_remote_ip_and_port(std::string& ip, int& port) const override {
-    if (remote_port_ < 0) peer_address(sock_, false, remote_ip_, remote_port_);
-    ip = remote_ip_;
-    port = remote_port_;
-  }
-  void get_local_ip_and_port(std::string& ip, int& port) const override {
-    if (local_port_ < 0) peer_address(sock_, true, local_ip_, local_port_);
-    ip = local_ip_;
-    port = local_port_;
-  }
-  socket_t socket() const override { return sock_; }
-
- private:
-  // One non-blocking recv appended to the buffer (consumed bytes are dropped first).
-  ssize_t receive() {
-    if (begin_ == buffer_.size()) {
-      buffer_.clear();
-      begin_ = 0;
-    }
-    std::array<char, 4096> chunk;
-    const ssize_t n = ::recv(sock_, chunk.data(), chunk.size(), MSG_DONTWAIT);
-    if (n > 0) buffer_.append(chunk.data(), static_cast<std::size_t>(n));
-    return n;
-  }
-
-  int sock_;
-  ConnectionState& state_;
-  const TransportOptions& options_;
-  Clock::time_point deadline_ = Clock::now();
-  std::string buffer_;
-  std::size_t begin_ = 0;
-  mutable std::string out_;  ///< response bytes not sent yet (mutable: the library's is_readable() is const)
-  mutable std::string remote_ip_, local_ip_;
-  mutable int remote_port_ = -1, local_port_ = -1;
-};
 
 // The library's task queue, reduced to running the accept loop's hand-off inline: the override of
 // process_and_close_socket passes the socket on to the gate this queue owns.
@@ -241,17 +81,6 @@ HttpRequest plain_request(const httplib::Request& req) {
   for (const auto& [k, v] : req.headers) out.headers.emplace(k, v);
   out.query.insert(req.params.begin(), req.params.end());
   out.body = req.body;
-  return out;
-}
-
-// The head as the request policy sees it: method, path and the few headers it reads.
-HttpRequest policy_head(const httplib::Request& req) {
-  HttpRequest out;
-  out.method = req.method;
-  out.path = req.path;
-  for (const char* name : kPolicyHeaders) {
-    if (auto it = req.headers.find(name); it != req.headers.end()) out.headers.emplace(name, it->second);
-  }
   return out;
 }
 
@@ -283,18 +112,6 @@ std::string printable(std::string_view s) {
     }
   }
   return out;
-}
-
-// Problems for the statuses the library produces itself, before any handler runs.
-codec::Problem library_problem(int status) {
-  switch (status) {
-    case 400: return codec::Problem(400, "Bad request", "", "the request line or a header is malformed");
-    case 413: return codec::Problem(413, "Payload too large", "Content-Length",
-                                    "request bodies are limited to " + std::to_string(limits::kMaxBodyBytes) + " bytes");
-    case 414: return codec::Problem(414, "URI too long", "path", "the request target is too long");
-    case 404: return codec::Problem(404, "Not found", "path", "no route for this method and path");
-    default: return codec::Problem(status, "HTTP error", "", "the request could not be served");
-  }
 }
 
 }  // namespace
@@ -377,23 +194,9 @@ class LibraryServer final : public httplib::Server {
   // not complete in time.
   std::string refusal(Refusal why, std::string_view received) {
     const Clock::time_point start = Clock::now();
-    const codec::Problem p =
-        why == Refusal::busy
-            ? codec::Problem(503, "Service unavailable", "",
-                             "the server is busy: " + std::to_string(options_.max_queued) +
-                                 " requests are already waiting for a worker; retry shortly")
-            : codec::Problem(408, "Request timeout", "",
-                             "the request line and headers must arrive within " +
-                                 std::to_string(options_.request_read_timeout.count()) + " ms");
-    const std::string body = codec::problem_json(p).dump();
-    const std::string_view line = received.substr(0, received.find("\r\n"));
-    const std::string_view method = line.substr(0, line.find(' '));
-    const std::size_t path_start = line.find(' ') == std::string_view::npos ? line.size() : line.find(' ') + 1;
-    const std::string_view path = line.substr(path_start, line.find(' ', path_start) - path_start);
-    finish(method, path, p.status, start);
-    return "HTTP/1.1 " + std::to_string(p.status) + (why == Refusal::busy ? " Service Unavailable" : " Request Timeout") +
-           "\r\nContent-Type: application/problem+json\r\n" + (why == Refusal::busy ? "Retry-After: 1\r\n" : "") +
-           "Connection: close\r\nContent-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body;
+    GateRefusal answer = gate_refusal(why, received, options_);
+    finish(answer.method, answer.path, answer.status, start);
+    return std::move(answer.response);
   }
 
  public:
@@ -435,8 +238,8 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
 
   s.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
     if (t_connection) t_connection->head_done = true;
-    if (auto problem = check_request_head(policy_head(req))) {
-      fill(res, problem_response(*problem));
+    if (auto refusal = head_refusal(req)) {
+      fill(res, std::move(*refusal));
       close_connection(req, res);
       return httplib::Server::HandlerResponse::Handled;
     }
@@ -446,10 +249,11 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
   // "Expect: 100-continue" is answered before the pre-routing hook runs: refuse there too, so a client
   // never sends a body we would refuse.
   s.set_expect_100_continue_handler([](const httplib::Request& req, httplib::Response& res) {
-    if (auto problem = check_request_head(policy_head(req))) {
-      fill(res, problem_response(*problem));
+    if (auto refusal = head_refusal(req)) {
+      const int status = refusal->status;
+      fill(res, std::move(*refusal));
       close_connection(req, res);
-      return problem->status;
+      return status;
     }
     return 100;
   });
@@ -469,23 +273,12 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
   // Statuses the library sets itself (malformed head, too long a target, ...) get a problem body too.
   s.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
-    // The library refuses a header line over its compiled-in limit with a bare 400; the bytes read
-    // tell that case apart from a malformed head.
-    const bool line_too_long = t_connection && !t_connection->head_done && res.status == 400 &&
-                               t_connection->head_bytes > limits::kMaxHeaderLineBytes;
-    if (t_connection && (t_connection->head_overflow || line_too_long)) {
-      fill(res, problem_response(codec::Problem(431, "Request header fields too large", "headers",
-                                                "the request line and headers are limited to " +
-                                                    std::to_string(limits::kMaxHeaderBytes) + " bytes, each line to " +
-                                                    std::to_string(limits::kMaxHeaderLineBytes))));
-    } else {
-      fill(res, problem_response(library_problem(res.status)));
-    }
+    fill(res, library_refusal(res.status, t_connection));
     close_connection(req, res);
     return httplib::Server::HandlerResponse::Handled;
   }));
   s.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
-    fill(res, problem_response(codec::Problem(500, "Internal error", "", "the request could not be served")));
+    fill(res, internal_error_refusal());
   });
 
   s.set_logger([&s](const httplib::Request& req, const httplib::Response& res) {

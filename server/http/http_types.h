@@ -1,6 +1,6 @@
 #pragma once
-// Plain request/response types the handlers see. Only http_transport.cpp knows the HTTP library; every
-// other file (routes, handlers, tests of them) works on these.
+// Plain request/response types the handlers see. Only the transport (http_transport.cpp and its
+// transport_*.cpp) knows the HTTP library; every other file (routes, handlers, tests of them) works on these.
 
 #include <functional>
 #include <map>

@@ -3,13 +3,14 @@
 // for the same request), keyed by the contract and the canonical request (routes.cpp: sorted keys, numbers
 // as doubles), so {"a":1,"b":2} and { "b": 2, "a": 1.0 } share an entry; routes.cpp also stores each
 // spelling's raw bytes as a key to the same body, so a repeat is found without parsing. Thread-safe.
+// The LRU itself is support::LruCache (core/include/softtune/support/lru_cache.h); this adds the
+// weighing (key plus body bytes) and the rule that keeps one body from flushing the cache.
 
 #include <cstddef>
-#include <list>
 #include <memory>
-#include <mutex>
 #include <string>
-#include <unordered_map>
+
+#include "softtune/support/lru_cache.h"
 
 namespace softtune::http {
 
@@ -27,17 +28,7 @@ class ResponseCache {
   std::size_t bytes() const;  ///< keys plus bodies
 
  private:
-  struct Entry {
-    std::string key;
-    std::shared_ptr<const std::string> body;
-  };
-  void evict_locked();
-
-  const std::size_t max_entries_, max_bytes_;
-  mutable std::mutex mutex_;
-  std::list<Entry> order_;  ///< most recently used first
-  std::unordered_map<std::string, std::list<Entry>::iterator> index_;
-  std::size_t bytes_ = 0;
+  support::LruCache<std::string, std::string> lru_;
 };
 
 }  // namespace softtune::http

@@ -188,7 +188,7 @@ TEST(FramePipeline, CacheServesRepeatsWithoutMakingFrames) {
   EXPECT_EQ(made.load(), 1);
   EXPECT_EQ(p.cached(preview->id), preview);
   EXPECT_EQ(p.find(preview->id)->wait(), preview);
-  const CacheStats s = p.cache_stats();
+  const support::LruStats s = p.cache_stats();
   EXPECT_EQ(s.entries, 1u);
   EXPECT_EQ(s.bytes, preview->bytes());
 }
@@ -200,7 +200,7 @@ TEST(FramePipeline, CacheIsBoundedByBytes) {
   o.cache_bytes = one * 2 + one / 2;  // room for two
   FramePipeline p(o);
   for (int i = 0; i < 4; ++i) p.submit("r" + std::to_string(i), small(5), [] { return sliding_box(5); })->wait();
-  const CacheStats s = p.cache_stats();
+  const support::LruStats s = p.cache_stats();
   EXPECT_EQ(s.entries, 2u);
   EXPECT_LE(s.bytes, o.cache_bytes);
   EXPECT_EQ(s.evictions, 2u);

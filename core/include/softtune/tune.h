@@ -3,12 +3,11 @@
 // exact softness, discrete analysis per integrator, engine export, warnings and the stages that ran.
 
 #include <array>
-#include <cstdint>
 #include <optional>
-#include <string_view>
 #include <variant>
 
 #include "softtune/designer.h"
+#include "softtune/diagnostics.h"
 #include "softtune/discrete_analysis.h"
 #include "softtune/effective_mass.h"
 #include "softtune/engine_export.h"
@@ -36,30 +35,6 @@ struct TuneRequest {
   /// Per modelled engine (indexed like engines::engine_models()), the settings its model assumes; a
   /// missing or empty entry means the engine's defaults. Values within each SettingSpec's range.
   std::vector<engines::SettingValues> engine_settings;
-};
-
-/// The stages a computation ran, in order; the response lists them so callers see what was left out.
-enum class Stage : std::uint8_t {
-  // tune
-  validate, designer_mapping, effective_mass, softness, exact_softness, discrete_analysis, engine_export,
-  engine_models,
-  // scenes
-  scene_setup, core_integrator, box2d_world, box2d_step, snapshots, response_fit, expectations,
-  // accuracy and stability
-  accuracy_runs, box2d_distance_joint, recommendation, stability_sweep, sequential_impulse_chain,
-  // rendering
-  render, png_encode,
-};
-std::string_view stage_name(Stage s);
-
-struct StageList {
-  std::array<Stage, 16> items{};
-  int count = 0;
-  void add(Stage s) { if (count < static_cast<int>(items.size())) items[count++] = s; }
-  bool contains(Stage s) const {
-    for (int i = 0; i < count; ++i) if (items[i] == s) return true;
-    return false;
-  }
 };
 
 struct TuneResult {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "softtune/diagnostics.h"
 #include "softtune/tune.h"
 
 namespace softtune::limits {
@@ -21,13 +22,6 @@ inline constexpr double kMinAxisLength = 1.0e-9;                     ///< m, bef
 }  // namespace softtune::limits
 
 namespace softtune {
-
-/// A rejected field: `field` is its dotted path in the request ("constraint.body_a.mass"), `rule` says
-/// what it must be.
-struct FieldError {
-  std::string field;
-  std::string rule;
-};
 
 /// Checks every range and the exactly-one-of pairs; the first violation, or nothing.
 std::optional<FieldError> validate_tune_request(const TuneRequest& request);

@@ -1,6 +1,6 @@
 #pragma once
-// Content hashes that name preview results: SHA-256 (FIPS 180-4), so two different requests never
-// share a cache entry or an ETag in practice.
+// Content hashes that name preview results: SHA-256 (FIPS 180-4, computed by OpenSSL's libcrypto), so
+// two different requests never share a cache entry or an ETag in practice.
 
 #include <string>
 #include <string_view>

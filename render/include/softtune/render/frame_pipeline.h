@@ -1,7 +1,10 @@
 #pragma once
-// The frame pipeline: a pool of render workers (each with its own long-lived GL context, created on its
-// first frame), PNG encoding on the same workers so one frame encodes while the next renders, results
-// named by a content hash and kept in a byte-bounded LRU cache, a filmstrip, and progress counters.
+// The frame pipeline: a pool of render worker threads, PNG encoding on the same workers so one frame
+// encodes while the next renders, results named by a content hash and kept in a byte-bounded LRU cache
+// (support::LruCache), a filmstrip, and progress counters. No GL here: each worker makes a renderer on
+// its first frame, which tessellates on the worker and has a softtune-raster process of its own (where
+// the GL context lives, renderer.h) draw the triangles; a worker that waits release_renderer_after_ms
+// without a frame destroys its renderer, and so ends that process.
 
 #include <atomic>
 #include <condition_variable>
@@ -17,13 +20,12 @@
 #include <thread>
 #include <vector>
 
+#include "softtune/diagnostics.h"
 #include "softtune/render/draw_model.h"
 #include "softtune/render/filmstrip.h"
-#include "softtune/render/lru_cache.h"
 #include "softtune/render/png.h"
 #include "softtune/render/renderer.h"
-#include "softtune/tune.h"
-#include "softtune/validation.h"
+#include "softtune/support/lru_cache.h"
 
 namespace softtune::render {
 
@@ -102,7 +104,7 @@ class PreviewJob {
 };
 
 struct PipelineOptions {
-  int workers = 2;                              ///< render threads, one GL context each
+  int workers = 2;                              ///< render threads, one renderer (one raster process) each
   std::size_t cache_bytes = std::size_t{256} << 20;
   PngOptions png;
   RendererOptions renderer;
@@ -134,7 +136,7 @@ class FramePipeline {
   /// The job in flight or the cached result by id (progress), or nullptr.
   std::shared_ptr<PreviewJob> find(const std::string& id);
 
-  CacheStats cache_stats() const { return cache_.stats(); }
+  support::LruStats cache_stats() const { return cache_.stats(); }
   int workers() const { return static_cast<int>(threads_.size()); }
 
  private:
@@ -147,7 +149,7 @@ class FramePipeline {
   void finish(JobState& job);
 
   PipelineOptions options_;
-  LruCache<Preview> cache_;
+  support::LruCache<std::string, Preview> cache_;  ///< by id, weighed by Preview::bytes()
   std::mutex jobs_mutex_;
   std::map<std::string, std::shared_ptr<JobState>> in_flight_;
   std::mutex queue_mutex_;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "softtune/diagnostics.h"
 #include "softtune/scene/joint_tuning.h"
 #include "softtune/scene/scene.h"
 

@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 
+#include "softtune/diagnostics.h"
 #include "softtune/effective_mass.h"
 #include "softtune/scene/scene.h"
 #include "softtune/tune.h"

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "softtune/diagnostics.h"
 #include "softtune/response_fit.h"
 #include "softtune/scene/joint_tuning.h"
 #include "softtune/scene/scene.h"

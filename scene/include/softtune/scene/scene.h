@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "softtune/diagnostics.h"
 #include "softtune/methods.h"
 #include "softtune/tune.h"
-#include "softtune/validation.h"
 
 namespace softtune::scene {
 

@@ -1,17 +1,24 @@
-#include "softtune/render/lru_cache.h"
+#include "softtune/support/lru_cache.h"
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <thread>
 #include <vector>
 
-namespace softtune::render {
+namespace softtune::support {
 namespace {
+
+using Cache = LruCache<std::string, int>;
 
 std::shared_ptr<const int> value(int v) { return std::make_shared<const int>(v); }
 
+LruBounds bytes_only(std::size_t max_bytes) { return {.max_bytes = max_bytes}; }
+
+// Bounded by bytes (the preview cache's way).
+
 TEST(LruCache, EvictsTheLeastRecentlyUsedToStayWithinBytes) {
-  LruCache<int> c(100);
+  Cache c(bytes_only(100));
   c.put("a", value(1), 40);
   c.put("b", value(2), 40);
   ASSERT_TRUE(c.get("a"));  // a is now the most recent
@@ -19,7 +26,7 @@ TEST(LruCache, EvictsTheLeastRecentlyUsedToStayWithinBytes) {
   EXPECT_FALSE(c.get("b"));
   EXPECT_EQ(*c.get("a"), 1);
   EXPECT_EQ(*c.get("c"), 3);
-  const CacheStats s = c.stats();
+  const LruStats s = c.stats();
   EXPECT_EQ(s.entries, 2u);
   EXPECT_EQ(s.bytes, 80u);
   EXPECT_EQ(s.evictions, 1u);
@@ -28,15 +35,17 @@ TEST(LruCache, EvictsTheLeastRecentlyUsedToStayWithinBytes) {
 }
 
 TEST(LruCache, ReplacingAKeyReplacesItsBytes) {
-  LruCache<int> c(100);
+  Cache c(bytes_only(100));
   c.put("a", value(1), 60);
   c.put("a", value(2), 30);
   EXPECT_EQ(*c.get("a"), 2);
   EXPECT_EQ(c.stats().bytes, 30u);
+  EXPECT_EQ(c.stats().entries, 1u);
+  EXPECT_EQ(c.stats().evictions, 0u);  // a replacement is not an eviction
 }
 
 TEST(LruCache, AValueLargerThanTheCapacityIsNotStored) {
-  LruCache<int> c(100);
+  Cache c(bytes_only(100));
   c.put("a", value(1), 50);
   EXPECT_FALSE(c.put("huge", value(2), 101));
   EXPECT_FALSE(c.get("huge"));
@@ -44,7 +53,7 @@ TEST(LruCache, AValueLargerThanTheCapacityIsNotStored) {
 }
 
 TEST(LruCache, AReaderKeepsItsValueAfterEviction) {
-  LruCache<int> c(10);
+  Cache c(bytes_only(10));
   c.put("a", value(7), 10);
   auto held = c.get("a");
   c.put("b", value(8), 10);
@@ -52,8 +61,39 @@ TEST(LruCache, AReaderKeepsItsValueAfterEviction) {
   EXPECT_EQ(*held, 7);
 }
 
+// Bounded by entries and bytes (the response cache's way).
+
+TEST(LruCache, EvictsTheLeastRecentlyUsedToStayWithinEntries) {
+  Cache c({.max_entries = 2, .max_bytes = 1 << 20});
+  c.put("a", value(1), 1);
+  c.put("b", value(2), 1);
+  ASSERT_TRUE(c.get("a"));  // "b" is now the least recently used
+  c.put("c", value(3), 1);
+  EXPECT_EQ(c.stats().entries, 2u);
+  EXPECT_EQ(*c.get("a"), 1);
+  EXPECT_EQ(c.get("b"), nullptr);
+  EXPECT_EQ(*c.get("c"), 3);
+  EXPECT_EQ(c.stats().evictions, 1u);
+}
+
+TEST(LruCache, WhicheverBoundIsReachedFirstEvicts) {
+  Cache c({.max_entries = 100, .max_bytes = 40});
+  for (int i = 1; i <= 5; ++i) c.put(std::to_string(i), value(i), 10);  // the fifth makes 50 bytes
+  EXPECT_EQ(c.stats().entries, 4u);
+  EXPECT_LE(c.stats().bytes, 40u);
+  EXPECT_EQ(c.get("1"), nullptr);
+  EXPECT_TRUE(c.get("5"));
+}
+
+TEST(LruCache, NoEntriesAllowedStoresNothing) {
+  Cache c({.max_entries = 0});
+  EXPECT_FALSE(c.put("a", value(1), 1));
+  EXPECT_EQ(c.get("a"), nullptr);
+  EXPECT_EQ(c.stats().entries, 0u);
+}
+
 TEST(LruCache, ConcurrentUseKeepsTheBound) {
-  LruCache<int> c(1000);
+  Cache c(bytes_only(1000));
   std::vector<std::thread> threads;
   for (int t = 0; t < 4; ++t) {
     threads.emplace_back([&c, t] {
@@ -72,4 +112,4 @@ TEST(LruCache, ConcurrentUseKeepsTheBound) {
 }
 
 }  // namespace
-}  // namespace softtune::render
+}  // namespace softtune::support

@@ -1,0 +1,81 @@
+#include "http/transport_refusals.h"
+
+#include "codec/problem.h"
+#include "http/limits.h"
+#include "http/request_policy.h"
+
+namespace softtune::http {
+namespace {
+
+// The head as the request policy sees it: method, path and the few headers it reads.
+HttpRequest policy_head(const httplib::Request& req) {
+  HttpRequest out;
+  out.method = req.method;
+  out.path = req.path;
+  for (const char* name : kPolicyHeaders) {
+    if (auto it = req.headers.find(name); it != req.headers.end()) out.headers.emplace(name, it->second);
+  }
+  return out;
+}
+
+// Problems for the statuses the library produces itself, before any handler runs.
+codec::Problem library_problem(int status) {
+  switch (status) {
+    case 400: return codec::Problem(400, "Bad request", "", "the request line or a header is malformed");
+    case 413: return codec::Problem(413, "Payload too large", "Content-Length",
+                                    "request bodies are limited to " + std::to_string(limits::kMaxBodyBytes) + " bytes");
+    case 414: return codec::Problem(414, "URI too long", "path", "the request target is too long");
+    case 404: return codec::Problem(404, "Not found", "path", "no route for this method and path");
+    default: return codec::Problem(status, "HTTP error", "", "the request could not be served");
+  }
+}
+
+}  // namespace
+
+std::optional<HttpResponse> head_refusal(const httplib::Request& req) {
+  if (auto problem = check_request_head(policy_head(req))) return problem_response(*problem);
+  return std::nullopt;
+}
+
+HttpResponse library_refusal(int status, const ConnectionState* state) {
+  // The library refuses a header line over its compiled-in limit with a bare 400; the bytes read
+  // tell that case apart from a malformed head.
+  const bool line_too_long =
+      state && !state->head_done && status == 400 && state->head_bytes > limits::kMaxHeaderLineBytes;
+  if (state && (state->head_overflow || line_too_long)) {
+    return problem_response(codec::Problem(431, "Request header fields too large", "headers",
+                                           "the request line and headers are limited to " +
+                                               std::to_string(limits::kMaxHeaderBytes) + " bytes, each line to " +
+                                               std::to_string(limits::kMaxHeaderLineBytes)));
+  }
+  return problem_response(library_problem(status));
+}
+
+HttpResponse internal_error_refusal() {
+  return problem_response(codec::Problem(500, "Internal error", "", "the request could not be served"));
+}
+
+GateRefusal gate_refusal(Refusal why, std::string_view received, const TransportOptions& options) {
+  const codec::Problem p =
+      why == Refusal::busy
+          ? codec::Problem(503, "Service unavailable", "",
+                           "the server is busy: " + std::to_string(options.max_queued) +
+                               " requests are already waiting for a worker; retry shortly")
+          : codec::Problem(408, "Request timeout", "",
+                           "the request line and headers must arrive within " +
+                               std::to_string(options.request_read_timeout.count()) + " ms");
+  const std::string body = codec::problem_json(p).dump();
+  GateRefusal out;
+  out.status = p.status;
+  const std::string_view line = received.substr(0, received.find("\r\n"));
+  out.method = line.substr(0, line.find(' '));
+  const std::size_t path_start = line.find(' ') == std::string_view::npos ? line.size() : line.find(' ') + 1;
+  out.path = line.substr(path_start, line.find(' ', path_start) - path_start);
+  out.response = "HTTP/1.1 " + std::to_string(p.status) +
+                 (why == Refusal::busy ? " Service Unavailable" : " Request Timeout") +
+                 "\r\nContent-Type: application/problem+json\r\n" + (why == Refusal::busy ? "Retry-After: 1\r\n" : "") +
+                 "Connection: close\r\nContent-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body;
+  return out;
+}
+
+}  // namespace softtune::http

@@ -1,0 +1,82 @@
+// The refusal writer without sockets: what each answer written before a handler runs says. The live
+// transport's refusals (a real 431, 408, 503 on the wire) are in hardening_test.cpp.
+#include "http/transport_refusals.h"
+
+#include <gtest/gtest.h>
+
+#include "http/limits.h"
+
+namespace softtune::http {
+namespace {
+
+nlohmann::json body(const HttpResponse& r) { return nlohmann::json::parse(r.body); }
+
+TEST(TransportRefusals, AHeadThePolicyRefusesIsAnsweredBeforeItsBody) {
+  httplib::Request chunked;
+  chunked.method = "POST";
+  chunked.path = "/api/v1/tune";
+  chunked.headers.emplace("Transfer-Encoding", "chunked");
+  const auto refusal = head_refusal(chunked);
+  ASSERT_TRUE(refusal);
+  EXPECT_EQ(refusal->status, 411);
+  EXPECT_EQ(refusal->content_type, "application/problem+json");
+  EXPECT_EQ(body(*refusal)["status"], 411);
+
+  httplib::Request fine;
+  fine.method = "GET";
+  fine.path = "/api/v1/health";
+  EXPECT_FALSE(head_refusal(fine));
+}
+
+TEST(TransportRefusals, ALongUnfinishedHeadIs431AndAMalformedOne400) {
+  ConnectionState long_line;
+  long_line.head_bytes = limits::kMaxHeaderLineBytes + 1;  // the library's bare 400 for its line limit
+  EXPECT_EQ(library_refusal(400, &long_line).status, 431);
+  EXPECT_EQ(body(library_refusal(400, &long_line))["field"], "headers");
+
+  ConnectionState overflow;
+  overflow.head_overflow = true;
+  EXPECT_EQ(library_refusal(400, &overflow).status, 431);
+
+  ConnectionState short_head;
+  short_head.head_bytes = 100;
+  EXPECT_EQ(library_refusal(400, &short_head).status, 400);
+  ConnectionState body_read = long_line;
+  body_read.head_done = true;  // past the head: a 400 is the library's own
+  EXPECT_EQ(library_refusal(400, &body_read).status, 400);
+  EXPECT_EQ(library_refusal(400, nullptr).status, 400);
+}
+
+TEST(TransportRefusals, TheLibrarysOwnStatusesKeepTheirStatusAndNameTheirField) {
+  EXPECT_EQ(body(library_refusal(414, nullptr))["field"], "path");
+  EXPECT_EQ(body(library_refusal(413, nullptr))["field"], "Content-Length");
+  EXPECT_EQ(library_refusal(404, nullptr).status, 404);
+  EXPECT_EQ(library_refusal(418, nullptr).status, 418);
+  EXPECT_EQ(internal_error_refusal().status, 500);
+  EXPECT_EQ(internal_error_refusal().content_type, "application/problem+json");
+}
+
+TEST(TransportRefusals, TheGatesAnswersAreWholeResponsesThatClose) {
+  TransportOptions options;
+  const GateRefusal busy = gate_refusal(Refusal::busy, "POST /api/v1/tune HTTP/1.1\r\nHost: x\r\n", options);
+  EXPECT_EQ(busy.status, 503);
+  EXPECT_EQ(busy.method, "POST");
+  EXPECT_EQ(busy.path, "/api/v1/tune");
+  EXPECT_EQ(busy.response.rfind("HTTP/1.1 503 Service Unavailable\r\n", 0), 0u) << busy.response;
+  EXPECT_NE(busy.response.find("\r\nRetry-After: 1\r\n"), std::string::npos);
+  EXPECT_NE(busy.response.find("\r\nConnection: close\r\n"), std::string::npos);
+  const std::string json = busy.response.substr(busy.response.find("\r\n\r\n") + 4);
+  EXPECT_NE(busy.response.find("Content-Length: " + std::to_string(json.size()) + "\r\n"), std::string::npos);
+  EXPECT_EQ(nlohmann::json::parse(json)["status"], 503);
+
+  const GateRefusal late = gate_refusal(Refusal::timeout, "GET /slo", options);  // a head cut short
+  EXPECT_EQ(late.status, 408);
+  EXPECT_EQ(late.method, "GET");
+  EXPECT_EQ(late.path, "/slo");
+  EXPECT_EQ(late.response.rfind("HTTP/1.1 408 Request Timeout\r\n", 0), 0u);
+  EXPECT_EQ(late.response.find("Retry-After"), std::string::npos);
+  EXPECT_EQ(gate_refusal(Refusal::timeout, "", options).method, "");
+}
+
+}  // namespace
+}  // namespace softtune::http
