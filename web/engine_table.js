@@ -34,7 +34,7 @@ function valueList(values) {
   if (!entries.length) return el('span', { className: 'muted', textContent: 'nothing to type' });
   return el('ul', { className: 'values' }, ...entries.map(([name, v]) => el('li', {},
     el('code', { title: name, textContent: shortName(name) }), ' = ',
-    typeof v === 'string' ? el('code', { textContent: v }) : number(v))));
+    typeof v === 'string' || typeof v === 'boolean' ? el('code', { textContent: String(v) }) : number(v))));
 }
 
 function errorClass(p, small, big) {

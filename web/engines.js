@@ -65,7 +65,7 @@ export const ENGINE_SYNTAX = {
         w.line(['dampingRatio'], (z) => `def.dampingRatio = ${z};`),
         'b2JointId jointId = b2CreateDistanceJoint(worldId, &def);',
         ...(settings.enableWarmStarting === undefined ? []
-          : [`b2World_EnableWarmStarting(worldId, ${settings.enableWarmStarting === 'false' ? 'false' : 'true'});`]),
+          : [`b2World_EnableWarmStarting(worldId, ${settings.enableWarmStarting === false || settings.enableWarmStarting === 'false' ? 'false' : 'true'});`]),
         ...(isNumber(settings.subStepCount) && isNumber(h)
           ? [`b2World_Step(worldId, ${cFloat(h)}, ${settings.subStepCount});  // timeStep, subStepCount`] : []),
       ];

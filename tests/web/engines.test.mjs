@@ -50,7 +50,7 @@ test('Box2D 2.4 (C++): b2DistanceJointDef fields and the step, exact or plain, a
 
 test('Box2D v3 (C): b2DefaultDistanceJointDef, enableSpring, hertz, dampingRatio and b2World_Step with subStepCount', () => {
   const text = snippet('box2d_v3', {
-    settings: { subStepCount: 4, enableWarmStarting: 'true' },
+    settings: { subStepCount: 4, enableWarmStarting: true },
     parameters: { 'b2DistanceJointDef::dampingRatio': 0.5, 'b2DistanceJointDef::enableSpring': 'true', 'b2DistanceJointDef::hertz': 5 },
     predicted: ok(5.4, 0.71),
     exact: { 'b2DistanceJointDef::dampingRatio': 0.31, 'b2DistanceJointDef::enableSpring': 'true', 'b2DistanceJointDef::hertz': 4.62 },
