@@ -2,6 +2,8 @@
 // so its plain export predicts standard softness and its exact parameters are softtune's k', c'.
 #include "softtune/engines/box2d_v2_4.h"
 
+#include "engine_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -14,24 +16,12 @@
 namespace softtune::engines {
 namespace {
 
-Target target(double hz, double zeta, double m, double h, SpringConstants spring) {
-  Target t;
-  t.effective_mass = m;
-  t.omega = 2.0 * std::numbers::pi * hz;
-  t.damping_ratio = zeta;
-  t.dt = h;
-  t.spring = spring;
-  return t;
-}
+using testing::target;
 
 TEST(Box2DV24Model, StepMapIsImplicitEuler) {
   const double m = 3.0, k = 500.0, c = 4.0, h = 1.0 / 60.0;
-  const Eigen::MatrixXd a = box2d_v2_4_step_map(m, k, c, h);
-  for (State s0 : {State{1.0, 0.0}, State{0.0, 1.0}, State{0.3, -2.0}}) {
-    const State s1 = implicit_euler_step(s0, Oscillator{m, k, c}, h);
-    EXPECT_NEAR(a(0, 0) * s0.x + a(0, 1) * s0.v, s1.x, 1e-12);
-    EXPECT_NEAR(a(1, 0) * s0.x + a(1, 1) * s0.v, s1.v, 1e-12);
-  }
+  const Eigen::Matrix2d a = box2d_v2_4_step_map(m, k, c, h);
+  testing::expect_implicit_euler(a, m, k, c, h);
 }
 
 TEST(Box2DV24Model, StandardExportPredictsImplicitEulersPoles) {

@@ -3,6 +3,8 @@
 // lambda = rhs - CFM lambda, and the exact parameters put the step's poles at exp(s h).
 #include "softtune/engines/bullet.h"
 
+#include "engine_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,15 +19,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Target target(double hz, double zeta, double m, double h, SpringConstants spring) {
-  Target t;
-  t.effective_mass = m;
-  t.omega = 2.0 * kPi * hz;
-  t.damping_ratio = zeta;
-  t.dt = h;
-  t.spring = spring;
-  return t;
-}
+using testing::target;
 
 SettingValues settings(double route, int iterations) {
   SettingValues v = default_settings(kBulletModel);

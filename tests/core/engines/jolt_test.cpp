@@ -4,6 +4,8 @@
 // at h corrected for that scale.
 #include "softtune/engines/jolt.h"
 
+#include "engine_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,15 +20,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Target target(double hz, double zeta, double m, double h, SpringConstants spring) {
-  Target t;
-  t.effective_mass = m;
-  t.omega = 2.0 * kPi * hz;
-  t.damping_ratio = zeta;
-  t.dt = h;
-  t.spring = spring;
-  return t;
-}
+using testing::target;
 
 SettingValues settings(int collision_steps, double linear_damping, int mode = 0) {
   SettingValues v = default_settings(kJoltModel);

@@ -3,6 +3,8 @@
 // tests/engines/mujoco.
 #include "softtune/engines/mujoco.h"
 
+#include "engine_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -18,15 +20,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Target target(double hz, double zeta, double m, double h, SpringConstants spring) {
-  Target t;
-  t.effective_mass = m;
-  t.omega = 2.0 * kPi * hz;
-  t.damping_ratio = zeta;
-  t.dt = h;
-  t.spring = spring;
-  return t;
-}
+using testing::target;
 
 SettingValues settings(MujocoIntegrator integrator = MujocoIntegrator::euler) {
   SettingValues v = default_settings(kMujocoModel);

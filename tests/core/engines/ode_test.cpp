@@ -4,6 +4,8 @@
 // parameters put the step's poles at exp(s h).
 #include "softtune/engines/ode.h"
 
+#include "engine_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,15 +19,7 @@
 namespace softtune::engines {
 namespace {
 
-Target target(double hz, double zeta, double m, double h, SpringConstants spring) {
-  Target t;
-  t.effective_mass = m;
-  t.omega = 2.0 * std::numbers::pi * hz;
-  t.damping_ratio = zeta;
-  t.dt = h;
-  t.spring = spring;
-  return t;
-}
+using testing::target;
 
 SettingValues quickstep(double iterations, double w) {
   SettingValues v = default_settings(kOdeModel);
@@ -120,11 +114,7 @@ TEST(OdeModel, WorldStepIsImplicitEulerOnTheUserGuidesSpring) {
   const double m = 3.0, k = 500.0, c = 4.0, h = 1.0 / 60.0;
   const double erp = h * k / (h * k + c), cfm = 1.0 / (h * k + c);
   const Eigen::Matrix2d a = ode_step_map(m, erp, cfm, h, 1.0);
-  for (State s0 : {State{1.0, 0.0}, State{0.0, 1.0}, State{0.3, -2.0}}) {
-    const State s1 = implicit_euler_step(s0, Oscillator{m, k, c}, h);
-    EXPECT_NEAR(a(0, 0) * s0.x + a(0, 1) * s0.v, s1.x, 1e-12);
-    EXPECT_NEAR(a(1, 0) * s0.x + a(1, 1) * s0.v, s1.v, 1e-12);
-  }
+  testing::expect_implicit_euler(a, m, k, c, h);
 }
 
 TEST(OdeModel, StandardExportPredictsImplicitEulersPoles) {

@@ -6,6 +6,8 @@
 // positionIterations of them at dt / positionIterations, an acceleration drive the same on unit mass.
 #include "softtune/engines/physx.h"
 
+#include "engine_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,15 +25,7 @@ namespace {
 
 constexpr double kFltMax = 3.4028234663852886e38;
 
-Target target(double hz, double zeta, double m, double h, SpringConstants spring) {
-  Target t;
-  t.effective_mass = m;
-  t.omega = 2.0 * std::numbers::pi * hz;
-  t.damping_ratio = zeta;
-  t.dt = h;
-  t.spring = spring;
-  return t;
-}
+using testing::target;
 
 SettingValues settings(double solver, double position, double velocity, double drive) {
   return {solver, position, velocity, drive};

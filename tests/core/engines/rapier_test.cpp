@@ -4,6 +4,8 @@
 // (m_eff, k_f, c_f); exact parameters are softtune's exact spring at the substep.
 #include "softtune/engines/rapier.h"
 
+#include "engine_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,15 +20,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Target target(double hz, double zeta, double m, double h, SpringConstants spring) {
-  Target t;
-  t.effective_mass = m;
-  t.omega = 2.0 * kPi * hz;
-  t.damping_ratio = zeta;
-  t.dt = h;
-  t.spring = spring;
-  return t;
-}
+using testing::target;
 
 SettingValues settings(int iterations, int model = 0, double damping = 0.0) {
   SettingValues v = default_settings(kRapierModel);
