@@ -113,7 +113,7 @@ TuneResult tune(const TuneRequest& r) {
   for (std::size_t i = 0; i < kAllMethods.size(); ++i) {
     out.stability[i] = analyze(kAllMethods[i], model, out.omega, out.damping_ratio);
   }
-  const DiscreteAnalysis& chosen = out.stability[exact ? 4 : 3];
+  const DiscreteAnalysis& chosen = out.stability[method_index(exact ? Method::soft_exact : Method::soft)];
   out.achieved_frequency_hz = chosen.achieved_frequency_hz;
   out.achieved_damping_ratio = chosen.achieved_damping_ratio;
   out.achieved_damped_frequency_hz = chosen.achieved_damped_frequency_hz;

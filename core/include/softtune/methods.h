@@ -2,6 +2,7 @@
 // The integration methods softtune compares, and one step of any of them from a shared model.
 
 #include <array>
+#include <cstddef>
 #include <string_view>
 
 #include "softtune/exact_softness.h"
@@ -12,6 +13,15 @@ namespace softtune {
 enum class Method { explicit_euler, semi_implicit_euler, implicit_euler, soft, soft_exact };
 inline constexpr std::array<Method, 5> kAllMethods = {Method::explicit_euler, Method::semi_implicit_euler,
                                                       Method::implicit_euler, Method::soft, Method::soft_exact};
+
+/// Where a method's result sits in anything indexed like kAllMethods (TuneResult::stability).
+constexpr std::size_t method_index(Method m) { return static_cast<std::size_t>(m); }
+static_assert([] {
+  for (std::size_t i = 0; i < kAllMethods.size(); ++i) {
+    if (method_index(kAllMethods[i]) != i) return false;
+  }
+  return true;
+}(), "kAllMethods lists the methods in their enum order");
 
 /// Stable snake_case name of a method ("explicit_euler", ..., "soft_exact"), used in every output.
 std::string_view method_name(Method m);
