@@ -52,6 +52,11 @@ double requested_effective_mass(const TuneRequest& r) {
   return 1.0 / constraint_inverse_mass(with_unit_axis(*r.constraint, length));
 }
 
+const engines::SettingValues& engine_settings_for(const TuneRequest& r, std::size_t index) {
+  if (index < r.engine_settings.size() && !r.engine_settings[index].empty()) return r.engine_settings[index];
+  return engines::default_settings_of(*engines::engine_models()[index]);
+}
+
 TuneResult tune(const TuneRequest& r) {
   TuneResult out;
   out.stages.add(Stage::validate);
@@ -148,9 +153,7 @@ TuneResult tune(const TuneRequest& r) {
   const auto models = engines::engine_models();
   out.engine_reports.reserve(models.size());
   for (std::size_t i = 0; i < models.size(); ++i) {
-    const bool given = i < r.engine_settings.size() && !r.engine_settings[i].empty();
-    out.engine_reports.push_back(
-        models[i]->report(target, given ? r.engine_settings[i] : engines::default_settings_of(*models[i])));
+    out.engine_reports.push_back(models[i]->report(target, engine_settings_for(r, i)));
   }
   return out;
 }

@@ -35,10 +35,9 @@ EngineVerification verify_engine(const RealEngine& engine, const TuneResult& res
   const std::size_t index = model_index(engine.name);
   if (index >= result.engine_reports.size()) return out;
   const EngineReport& report = result.engine_reports[index];
-  const bool given = index < request.engine_settings.size() && !request.engine_settings[index].empty();
   EngineRun run;
   run.effective_mass = result.effective_mass;
-  run.settings = given ? request.engine_settings[index] : default_settings(*engine_models()[index]);
+  run.settings = engine_settings_for(request, index);
   run.dt = result.h;
   run.steps = static_cast<int>(std::ceil(options.duration_s / result.h));
   run.x0 = options.x0;

@@ -73,6 +73,13 @@ nlohmann::json read_request_file(const std::string& path) {
   return codec::parse_json(buffer.str());
 }
 
+nlohmann::json request_from(const Flags& flags, const std::function<nlohmann::json()>& from_flags) {
+  const auto file = flags.get("request");
+  if (!file) return from_flags();
+  if (flags.values.size() > 1) throw codec::invalid_field("--request", "cannot be combined with other flags");
+  return read_request_file(*file);
+}
+
 void print_json(const nlohmann::json& doc) { std::cout << doc.dump(2) << '\n'; }
 
 void print_answer(const app::Answer& answer) {

@@ -33,6 +33,10 @@ double flag_number(const Flags& f, const std::string& name);
 /// Reads the JSON document in FILE, or stdin for "-".
 nlohmann::json read_request_file(const std::string& path);
 
+/// The request of a command: the JSON in `--request FILE` (which takes no other flag), else the one
+/// `from_flags` builds from the flags.
+nlohmann::json request_from(const Flags& flags, const std::function<nlohmann::json()>& from_flags);
+
 /// Prints a JSON document on stdout.
 void print_json(const nlohmann::json& doc);
 

@@ -3,7 +3,6 @@
 
 #include "cli/cli_io.h"
 #include "cli/tune_flags.h"
-#include "codec/problem.h"
 #include "app/tune_app.h"
 #include "codec/tune_codec.h"
 
@@ -30,14 +29,7 @@ int run_tune(const Args& args) {
       std::cout << kHelp << kTuneFlagsHelp << kHelpTail;
       return kExitOk;
     }
-    nlohmann::json request;
-    if (auto file = flags.get("request")) {
-      if (flags.values.size() > 1) throw codec::invalid_field("--request", "cannot be combined with other flags");
-      request = read_request_file(*file);
-    } else {
-      request = tune_fields_from_flags(flags);
-    }
-    print_json(app::run_tune(request));
+    print_json(app::run_tune(request_from(flags, [&] { return tune_fields_from_flags(flags); })));
     return kExitOk;
   });
 }

@@ -4,7 +4,6 @@
 #include "app/verify_app.h"
 #include "cli/cli_io.h"
 #include "cli/tune_flags.h"
-#include "codec/problem.h"
 
 namespace softtune::cli {
 namespace {
@@ -44,19 +43,15 @@ int run_verify(const Args& args) {
       std::cout << kHelp << kTuneFlagsHelp << kHelpTail;
       return kExitOk;
     }
-    nlohmann::json request;
-    if (auto file = flags.get("request")) {
-      if (flags.values.size() > 1) throw codec::invalid_field("--request", "cannot be combined with other flags");
-      request = read_request_file(*file);
-    } else {
+    print_json(app::run_verify(request_from(flags, [&] {
       Flags tune_only = flags;
       for (const char* f : {"engines", "duration", "body"}) tune_only.values.erase(f);
-      request = tune_fields_from_flags(tune_only);
+      nlohmann::json request = tune_fields_from_flags(tune_only);
       if (auto e = flags.get("engines")) request["engines"] = split_names(*e);
       if (auto d = flags.get("duration")) request["duration_s"] = flag_number(flags, "duration");
       if (auto b = flags.get("body")) request["body"] = *b;
-    }
-    print_json(app::run_verify(request));
+      return request;
+    })));
     return kExitOk;
   });
 }

@@ -62,6 +62,10 @@ struct TuneResult {
   StageList stages;
 };
 
+/// The settings the model at `index` of engines::engine_models() runs with for this request: the request's
+/// engine_settings entry when it has one, else that engine's defaults.
+const engines::SettingValues& engine_settings_for(const TuneRequest& request, std::size_t index);
+
 /// Runs a request that passed validate_tune_request().
 TuneResult tune(const TuneRequest& request);
 
