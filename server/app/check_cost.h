@@ -10,8 +10,9 @@
 
 namespace softtune::app {
 
-/// Largest estimated work of one check request, in body-steps: about 2 s of one core (measured: docs/preset-ci.md).
-inline constexpr double kMaxCheckWork = 4.0e6;
+/// Largest estimated work of one check request, in body-steps: about 2 s of one core (seven presets at 6 rates x 3
+/// substep counts, 7.9e6 body-steps, took 3.1 s of CPU: 2.5e6 a second; docs/preset-ci.md).
+inline constexpr double kMaxCheckWork = 5.0e6;
 
 /// Body-steps of one case: frames x substeps x max(1, bodies + joints + oscillators), times the runs its
 /// expectations need (one per mass model). Oscillators cost a core-integrator step each, far less than a

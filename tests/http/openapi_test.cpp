@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "app/accuracy_app.h"
+#include "app/check_cost.h"
+#include "app/check_request.h"
 #include "app/verify_app.h"
 #include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
@@ -118,7 +120,11 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["stability_max_grid_entries"], softtune::codec::kMaxGridEntries);
   EXPECT_EQ(x["stability_max_cases"], softtune::codec::kMaxCases);
   EXPECT_EQ(x["stability_max_observe_steps"], softtune::codec::kMaxObserveSteps);
-  EXPECT_EQ(x.size(), 30u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x["check_max_work"], softtune::app::kMaxCheckWork);
+  EXPECT_EQ(x["check_max_presets"], softtune::app::kMaxCheckPresets);
+  EXPECT_EQ(x["check_max_scenes"], softtune::app::kMaxCheckScenes);
+  EXPECT_EQ(x["check_max_rates"], softtune::scene::limits::kMaxRates);
+  EXPECT_EQ(x.size(), 34u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {
