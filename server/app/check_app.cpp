@@ -8,6 +8,7 @@
 #include <set>
 #include <thread>
 
+#include "app/check_cost.h"
 #include "app/preset_store.h"
 #include "codec/json_writer.h"
 #include "codec/problem.h"
@@ -181,12 +182,23 @@ CheckReport run_checks(const std::vector<CheckInput>& all_inputs, const CheckOpt
     for (const CheckRate& r : check_rates(*p.scene, options)) jobs.push_back({i, r});
   }
 
-  // A pool of `jobs` threads takes cases in order; each result lands in its own slot, so the report's order
-  // does not depend on which thread finished first.
+  // A pool of `jobs` threads takes the cases largest first (their estimated work, check_cost.h), so the last
+  // one to finish is a short one; each result lands in its own slot, so the report's order does not depend on
+  // which thread finished first.
+  std::vector<std::size_t> order(jobs.size());
+  std::vector<double> cost(jobs.size(), 0.0);
+  for (std::size_t k = 0; k < jobs.size(); ++k) {
+    order[k] = k;
+    if (jobs[k].rate) cost[k] = case_work(*prepared[jobs[k].prepared].scene, *jobs[k].rate);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   report.cases.resize(jobs.size());
   std::atomic<std::size_t> next{0};
   auto work = [&] {
-    for (std::size_t k = next++; k < jobs.size(); k = next++) report.cases[k] = run_case(prepared[jobs[k].prepared], jobs[k], options);
+    for (std::size_t i = next++; i < jobs.size(); i = next++) {
+      const std::size_t k = order[i];
+      report.cases[k] = run_case(prepared[jobs[k].prepared], jobs[k], options);
+    }
   };
   const int threads = std::clamp(options.jobs, 1, std::min<int>(kMaxCheckJobs, static_cast<int>(std::max<std::size_t>(1, jobs.size()))));
   std::vector<std::thread> pool;

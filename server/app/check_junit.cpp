@@ -35,7 +35,9 @@ std::string testcase_xml(const CaseResult& c) {
   const std::string first = messages.empty() ? "failed" : messages.front();
   const std::string summary = messages.size() > 1 ? first + " (and " + std::to_string(messages.size() - 1) + " more)" : first;
   const char* element = c.problem ? "error" : "failure";
-  const char* type = c.problem ? "problem" : (c.drift.empty() ? "expectation" : "expectation_or_drift");
+  bool expectation_failed = false;
+  for (const auto& e : c.expectations) expectation_failed = expectation_failed || !e["passed"].get<bool>();
+  const char* type = c.problem ? "problem" : (expectation_failed ? "expectation" : "drift");
   out += std::string("      <") + element + attribute("message", summary) + attribute("type", type) + ">" + xml_escaped(body) +
          "</" + element + ">\n";
   return out + "    </testcase>\n";
