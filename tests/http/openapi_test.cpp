@@ -189,6 +189,7 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
       {"/api/v1/accuracy", [](const json& q) { return softtune::app::run_accuracy(q); }},
       {"/api/v1/stability", [](const json& q) { return softtune::app::run_stability(q); }},
       {"/api/v1/verify", [](const json& q) { return softtune::app::run_verify(q); }},
+      {"/api/v1/check", [&](const json& q) { return softtune::app::run_check_request(q, presets).json; }},
   };
   for (const auto& [path, contract] : contracts) {
     const json& body = openapi_document()["paths"][path]["post"]["requestBody"]["content"]["application/json"];
