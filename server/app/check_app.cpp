@@ -52,7 +52,7 @@ CaseResult run_case(const Prepared& p, const Job& job, const CheckOptions& optio
     } else {
       const scene::CheckResult check = scene::check_scene(at_rate(*p.scene, c.rate));
       for (const scene::SceneResult& run : check.runs) {
-        if (run.error) throw invalid_field(run.error->field, run.error->rule);
+        if (run.error) throw_field_error(*run.error);
       }
       c.expectations = expectations_json(check);
       c.figures = measured_figures(check);
