@@ -75,11 +75,15 @@ CaseResult run_case(const Prepared& p, const Job& job, const CheckOptions& optio
   return c;
 }
 
+// "drag.frequency_error", "hanger_1.frequency_error(box2d_reduced)"; appended piece by piece (GCC 12 warns
+// -Wrestrict, wrongly, on the chained operator+ of these temporaries).
 std::string figure_label(const json& e) {
-  std::string out;
-  if (!e["probe"].get<std::string>().empty()) out = e["probe"].get<std::string>() + ".";
-  out += e["metric"].get<std::string>();
-  if (e["mass_model"] != "effective") out += "(" + e["mass_model"].get<std::string>() + ")";
+  const std::string& probe = e["probe"].get_ref<const std::string&>();
+  const std::string& model = e["mass_model"].get_ref<const std::string&>();
+  std::string out = probe;
+  if (!probe.empty()) out.append(".");
+  out.append(e["metric"].get_ref<const std::string&>());
+  if (model != "effective") out.append("(").append(model).append(")");
   return out;
 }
 
