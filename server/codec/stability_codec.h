@@ -30,6 +30,9 @@ struct StabilityRequest {
   bool include_cases = true;  ///< false: counts and chain limits only (`--summary`)
 };
 
+/// "found", "none_in_range" (no limit inside the searched range), "unstable_at_lowest".
+const char* limit_kind_name(LimitKind kind);
+
 /// An empty object (or null) is the default sweep. Throws Problem (422) naming the field and the rule.
 StabilityRequest decode_stability_request(const nlohmann::json& doc);
 
