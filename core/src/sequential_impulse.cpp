@@ -197,17 +197,14 @@ ChainSweepSettings default_chain_sweep_settings() {
   return s;
 }
 
-ChainLimit find_chain_limit(ChainSolver solver, int count, bool warm, double ratio, double zeta, double h,
-                            std::span<const double> scan, int observe_steps, std::span<const double> scan_radii) {
-  auto model_at = [&](double fr) { return chain_model(solver, count, warm, ratio, omega_of(fr, h), zeta, h); };
+ChainLimit find_chain_limit(const ChainModelAt& model_at, std::span<const double> scan, int observe_steps,
+                            std::span<const double> scan_radii) {
   const ChainModel base = model_at(scan.empty() ? 1e-3 : scan.front());
   ChainLimit limit;
-  limit.solver = solver;
-  limit.count = count;
-  limit.mass_ratio = ratio;
+  limit.mass_ratio = base.mass_ratio;
   limit.iterations = base.iterations;
   limit.substeps = base.substeps;
-  limit.warm_start = warm;
+  limit.warm_start = base.warm_start;
   std::size_t next = 0;  // the scan's radii are used as far as they go
   const SpectralRadiusOf rho = [&](double fr) {
     if (next < scan_radii.size() && next < scan.size() && fr == scan[next]) return scan_radii[next++];
@@ -220,7 +217,7 @@ ChainLimit find_chain_limit(ChainSolver solver, int count, bool warm, double rat
   limit.lowest_unstable_frequency_ratio = found.unstable_side;
   limit.stable_side_radius = found.stable_side_radius;
   limit.unstable_side_radius = found.unstable_side_radius;
-  if (found.stable_side) limit.highest_stable_frequency_hz = *found.stable_side / h;
+  if (found.stable_side) limit.highest_stable_frequency_hz = *found.stable_side / base.h;
   // The grid-only answer: the last scan point at or below the stable side.
   for (double fr : scan) {
     if (found.stable_side && fr <= *found.stable_side) limit.scan_highest_stable_frequency_ratio = fr;
@@ -230,6 +227,16 @@ ChainLimit find_chain_limit(ChainSolver solver, int count, bool warm, double rat
     limit.observed_unstable_side = observed_verdict(observe_chain(model_at(*found.unstable_side), observe_steps));
     limit.confirmed = *limit.observed_stable_side != Verdict::unstable && *limit.observed_unstable_side == Verdict::unstable;
   }
+  return limit;
+}
+
+ChainLimit find_chain_limit(ChainSolver solver, int count, bool warm, double ratio, double zeta, double h,
+                            std::span<const double> scan, int observe_steps, std::span<const double> scan_radii) {
+  ChainLimit limit = find_chain_limit(
+      [&](double fr) { return chain_model(solver, count, warm, ratio, omega_of(fr, h), zeta, h); }, scan,
+      observe_steps, scan_radii);
+  limit.solver = solver;
+  limit.count = count;
   return limit;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "softtune/exact_softness.h"
+#include "softtune/tune_chain.h"
 
 namespace softtune {
 
@@ -154,6 +155,10 @@ TuneResult tune(const TuneRequest& r) {
   out.engine_reports.reserve(models.size());
   for (std::size_t i = 0; i < models.size(); ++i) {
     out.engine_reports.push_back(models[i]->report(target, engine_settings_for(r, i)));
+  }
+  if (r.chain) {
+    out.stages.add(Stage::sequential_impulse_chain);
+    out.chain = design_chain(chain_design_request(r, out));
   }
   return out;
 }

@@ -26,6 +26,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -136,6 +137,12 @@ ChainSweepResult run_chain_sweep(const ChainSweepSettings& settings);
 /// points), bisected, and confirmed by `observe_steps`-step simulations of both sides.
 ChainLimit find_chain_limit(ChainSolver solver, int count, bool warm_start, double mass_ratio, double zeta,
                             double h, std::span<const double> scan, int observe_steps,
+                            std::span<const double> scan_radii = {});
+
+/// The same for any chain: `model_at(f h)` builds the model at a frequency ratio (its h is the step). The
+/// limit's solver and count fields are left for the caller.
+using ChainModelAt = std::function<ChainModel(double frequency_ratio)>;
+ChainLimit find_chain_limit(const ChainModelAt& model_at, std::span<const double> scan, int observe_steps,
                             std::span<const double> scan_radii = {});
 
 }  // namespace softtune
