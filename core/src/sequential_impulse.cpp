@@ -240,6 +240,33 @@ ChainLimit find_chain_limit(ChainSolver solver, int count, bool warm, double rat
   return limit;
 }
 
+namespace {
+
+// The grid-only answer: the last scanned f h before the first predicted-unstable one.
+ChainLimit grid_limit(ChainSolver solver, int count, bool warm, double ratio, const ChainSweepSettings& s,
+                      const std::vector<double>& radii) {
+  ChainLimit l;
+  l.solver = solver;
+  l.count = count;
+  l.mass_ratio = ratio;
+  l.warm_start = warm;
+  l.kind = LimitKind::none_in_range;
+  l.stable_over_whole_scan = true;
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    if (classify_spectral_radius(radii[i]) == Verdict::unstable) {
+      l.kind = i == 0 ? LimitKind::unstable_at_lowest : LimitKind::found;
+      l.stable_over_whole_scan = false;
+      l.lowest_unstable_frequency_ratio = s.frequency_ratios[i];
+      break;
+    }
+    l.highest_stable_frequency_ratio = l.scan_highest_stable_frequency_ratio = s.frequency_ratios[i];
+    l.highest_stable_frequency_hz = s.frequency_ratios[i] / s.h;
+  }
+  return l;
+}
+
+}  // namespace
+
 ChainSweepResult run_chain_sweep(const ChainSweepSettings& s) {
   ChainSweepResult out;
   const int steps = std::max(1000, s.observe_steps);
@@ -256,8 +283,12 @@ ChainSweepResult run_chain_sweep(const ChainSweepSettings& s) {
             radii.push_back(c.spectral_radius);
             out.cases.push_back(c);
           }
-          out.limits.push_back(find_chain_limit(solver, count, warm, ratio, s.damping_ratio, s.h, s.frequency_ratios, steps, radii));
-          if (!out.limits.back().confirmed) ++out.unconfirmed_limits;
+          if (s.bisect) {
+            out.limits.push_back(find_chain_limit(solver, count, warm, ratio, s.damping_ratio, s.h, s.frequency_ratios, steps, radii));
+            if (!out.limits.back().confirmed) ++out.unconfirmed_limits;
+          } else {
+            out.limits.push_back(grid_limit(solver, count, warm, ratio, s, radii));
+          }
         }
       }
     }

@@ -97,7 +97,9 @@ StepLimit find_step_limit(Method m, double zeta) {
 SweepResult run_sweep(const SweepSettings& s) {
   SweepResult out;
   for (Method m : s.methods) {
-    for (double zeta : s.damping_ratios) out.step_limits.push_back(find_step_limit(m, zeta));
+    for (double zeta : s.damping_ratios) {
+      if (s.step_limits) out.step_limits.push_back(find_step_limit(m, zeta));
+    }
   }
   const int n = std::max(1000, s.observe_steps);
   auto add = [&](SweepCase c) {

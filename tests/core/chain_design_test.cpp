@@ -26,31 +26,31 @@ TEST(ChainDesign, FewestCountHoldsWithMarginAndOneFewerDoesNot) {
   const std::pair<ChainSolver, double> cases[] = {
       {ChainSolver::box2d_v2_4, 20.0}, {ChainSolver::jolt, 20.0}, {ChainSolver::box2d_v3, 30.0}};
   for (const auto& [solver, frequency] : cases) {
-  ChainDesignRequest q;
-  q.mass_ratio = 1e3;
-  q.frequency_hz = frequency;
-  q.margin = 1.25;
-  q.solvers.push_back({solver, 1, true, kH});
-  const std::vector<ChainDesign> answer = design_chain(q);
-  ASSERT_EQ(answer.size(), 1u);
-  for (const ChainDesign& d : answer) {
-    const char* name = chain_solver_name(d.settings.solver).data();
-    EXPECT_FALSE(d.stable_at_target) << name;  // one iteration or substep is not enough at 20 Hz
-    ASSERT_TRUE(d.fewest_count) << name;
-    const int n = *d.fewest_count;
-    EXPECT_GT(n, 1) << name;
-    // Stable (by simulation) at the asked frequency and at margin x it with n; unstable at margin x with n - 1
-    // or below it.
-    EXPECT_NE(simulated(d.settings, n, q.mass_ratio, q.frequency_hz), Verdict::unstable) << name;
-    EXPECT_NE(simulated(d.settings, n, q.mass_ratio, q.margin * q.frequency_hz), Verdict::unstable) << name;
-    ASSERT_TRUE(d.fewest_count_limit_hz);
-    EXPECT_GE(*d.fewest_count_limit_hz, q.margin * q.frequency_hz) << name;
-    bool fewer_blows_up = false;
-    for (double f = q.frequency_hz * 0.5; f <= q.margin * q.frequency_hz * 1.0001; f *= 1.02) {
-      fewer_blows_up = fewer_blows_up || simulated(d.settings, n - 1, q.mass_ratio, f) == Verdict::unstable;
+    ChainDesignRequest q;
+    q.mass_ratio = 1e3;
+    q.frequency_hz = frequency;
+    q.margin = 1.25;
+    q.solvers.push_back({solver, 1, true, kH});
+    const std::vector<ChainDesign> answer = design_chain(q);
+    ASSERT_EQ(answer.size(), 1u);
+    for (const ChainDesign& d : answer) {
+      const char* name = chain_solver_name(d.settings.solver).data();
+      EXPECT_FALSE(d.stable_at_target) << name;  // one iteration or substep is not enough there
+      ASSERT_TRUE(d.fewest_count) << name;
+      const int n = *d.fewest_count;
+      EXPECT_GT(n, 1) << name;
+      // Stable (by simulation) at the asked frequency and at margin x it with n; unstable at margin x with n - 1
+      // or below it.
+      EXPECT_NE(simulated(d.settings, n, q.mass_ratio, q.frequency_hz), Verdict::unstable) << name;
+      EXPECT_NE(simulated(d.settings, n, q.mass_ratio, q.margin * q.frequency_hz), Verdict::unstable) << name;
+      ASSERT_TRUE(d.fewest_count_limit_hz);
+      EXPECT_GE(*d.fewest_count_limit_hz, q.margin * q.frequency_hz) << name;
+      bool fewer_blows_up = false;
+      for (double f = q.frequency_hz * 0.5; f <= q.margin * q.frequency_hz * 1.0001; f *= 1.02) {
+        fewer_blows_up = fewer_blows_up || simulated(d.settings, n - 1, q.mass_ratio, f) == Verdict::unstable;
+      }
+      EXPECT_TRUE(fewer_blows_up) << name;
     }
-    EXPECT_TRUE(fewer_blows_up) << name;
-  }
   }
 }
 

@@ -97,6 +97,9 @@ struct ChainSweepSettings {
   double damping_ratio = 0.0;
   double h = 1.0 / 60.0;  ///< s
   int observe_steps = 1000;
+  /// false: the grid-only answer (the last scan point before the first unstable one, no bisection and no
+  /// confirmation), the benchmark's baseline.
+  bool bisect = true;
 };
 ChainSweepSettings default_chain_sweep_settings();
 

@@ -54,6 +54,7 @@ struct SweepSettings {
   std::vector<double> steps;             ///< h values, s
   double max_stiffness = 1e12;           ///< N/m; frequency_ratio cases above it are not run
   int observe_steps = 1000;              ///< N, at least 1000
+  bool step_limits = true;               ///< bisect each method's largest stable omega h (StepLimit)
 };
 
 /// The default sweep (docs/accuracy-and-stability.md): f h from 0.001 to 2, zeta in {0, 1e-3, 0.1, 0.5,
