@@ -71,7 +71,7 @@ std::string stability_svg(const json& encoded) {
     }
     for (const std::string& solver : solvers) {
       const bool substeps = solver == "box2d_v3" || solver == "rapier";
-      plot::Plot p{"Mass-ratio chain in " + solver + ": highest stable f h, bisected to 0.1 % (no limit: plotted at the scan's top)",
+      plot::Plot p{"Chain in " + solver + ": highest stable f h (bisected; no limit: at the scan top)",
                    plot::make_axis("mass ratio m2 / m1", "", Scale::log), plot::make_axis("highest stable f h", "", Scale::log), {}, {}};
       for (const json& l : encoded.at("chain").at("limits")) {
         if (l.at("solver") != solver) continue;

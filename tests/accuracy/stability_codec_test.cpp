@@ -105,7 +105,7 @@ TEST(StabilityCodec, SvgHasMapsAndChain) {
   const std::string svg = stability_svg(run_stability(request));
   for (const char* text : {"Stability map at zeta = 0:", "Stability map at zeta = 10:", "highest stable f h",
                            "1 iterations, warm start", "semi_implicit_euler",
-                           "Mass-ratio chain in box2d_v3", "4 substeps, warm start"}) {
+                           "Chain in box2d_v3", "4 substeps, warm start"}) {
     EXPECT_NE(svg.find(text), std::string::npos) << text;
   }
 }
