@@ -20,6 +20,20 @@ const char* verdict_name(Verdict v) {
 
 }  // namespace
 
+std::optional<std::vector<ChainSolver>> read_chain_solvers(const json* v, const std::string& field) {
+  if (!v) return std::nullopt;
+  std::string rule = "must be an array of 1 to 4 solver names:";
+  for (ChainSolver s : kAllChainSolvers) rule += std::string(" ") + std::string(chain_solver_name(s));
+  if (!v->is_array() || v->empty() || v->size() > kAllChainSolvers.size()) throw invalid_field(field, rule);
+  std::vector<ChainSolver> out;
+  for (std::size_t i = 0; i < v->size(); ++i) {
+    const auto s = (*v)[i].is_string() ? chain_solver_from_name((*v)[i].get<std::string>()) : std::nullopt;
+    if (!s) throw invalid_field(field + "[" + std::to_string(i) + "]", rule);
+    out.push_back(*s);
+  }
+  return out;
+}
+
 const char* limit_kind_name(LimitKind k) {
   return k == LimitKind::found ? "found" : k == LimitKind::none_in_range ? "none_in_range" : "unstable_at_lowest";
 }
@@ -78,21 +92,6 @@ std::vector<Method> read_methods(ObjectReader& r) {
   return out;
 }
 
-std::vector<ChainSolver> read_solvers(ObjectReader& r) {
-  const json* v = r.raw("solvers");
-  std::string rule = "must be an array of 1 to 4 solver names:";
-  for (ChainSolver s : kAllChainSolvers) rule += std::string(" ") + std::string(chain_solver_name(s));
-  if (!v) return {kAllChainSolvers.begin(), kAllChainSolvers.end()};
-  if (!v->is_array() || v->empty() || v->size() > kAllChainSolvers.size()) throw invalid_field("chain.solvers", rule);
-  std::vector<ChainSolver> out;
-  for (std::size_t i = 0; i < v->size(); ++i) {
-    const auto s = (*v)[i].is_string() ? chain_solver_from_name((*v)[i].get<std::string>()) : std::nullopt;
-    if (!s) throw invalid_field("chain.solvers[" + std::to_string(i) + "]", rule);
-    out.push_back(*s);
-  }
-  return out;
-}
-
 void read_chain(ObjectReader& parent, StabilityRequest& q) {
   const json* v = parent.raw("chain");
   if (!v) return;
@@ -103,7 +102,7 @@ void read_chain(ObjectReader& parent, StabilityRequest& q) {
   if (!v->is_object()) throw invalid_field("chain", "must be true, false or an object");
   ObjectReader r = *parent.object("chain");
   ChainSweepSettings& c = q.chain;
-  c.solvers = read_solvers(r);
+  if (auto x = read_chain_solvers(r.raw("solvers"), "chain.solvers")) c.solvers = *x;
   if (auto x = read_number_list(r, "mass_ratios", kMaxGridEntries, 1.0, kMaxMassRatio, "")) c.mass_ratios = *x;
   if (auto x = read_integer_list(r, "iterations", kMaxGridEntries, 1, kMaxChainIterations)) c.iterations = *x;
   if (auto x = read_number_list(r, "frequency_ratios", kMaxGridEntries, 1e-6, kMaxFrequencyRatio, "")) c.frequency_ratios = *x;

@@ -225,17 +225,7 @@ std::optional<ChainAsk> read_chain_ask(ObjectReader& parent) {
     if (!(*m >= 1.0 && *m <= kMaxChainMargin)) throw invalid_field(r.field("margin"), "must be a number in [1, 10]");
     a.margin = *m;
   }
-  if (const json* v = r.raw("solvers")) {
-    std::string rule = "must be an array of 1 to 4 solver names:";
-    for (ChainSolver s : kAllChainSolvers) rule += std::string(" ") + std::string(chain_solver_name(s));
-    if (!v->is_array() || v->empty() || v->size() > kAllChainSolvers.size()) throw invalid_field(r.field("solvers"), rule);
-    a.solvers.clear();
-    for (std::size_t i = 0; i < v->size(); ++i) {
-      const auto s = (*v)[i].is_string() ? chain_solver_from_name((*v)[i].get<std::string>()) : std::nullopt;
-      if (!s) throw invalid_field(r.field("solvers") + "[" + std::to_string(i) + "]", rule);
-      a.solvers.push_back(*s);
-    }
-  }
+  if (auto x = read_chain_solvers(r.raw("solvers"), r.field("solvers"))) a.solvers = *x;
   r.finish();
   return a;
 }
