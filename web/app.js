@@ -8,6 +8,7 @@ import { responseSeries } from './oscillator.js';
 import { drawError, drawResponse, drawSimulation, drawWorkPrecision, showUnavailable } from './plots.js';
 import { PreviewPlayer } from './preview.js';
 import { showEngines, watchEngineValues } from './engine_table.js';
+import { chainField, showChain } from './chain.js';
 import { copyText, fmt, formatPercent, showNumbers, showStability } from './results.js';
 import {
   OSCILLATION_ZETA, fromQuery, readForm, stateFromScene, toQuery, tuneRequest, tunedScene, tuningFields,
@@ -133,6 +134,9 @@ const scheduleTune = trackedDebounce(runTune, 120);
 async function runTune() {
   const state = readForm(form);
   const request = tuneRequest(state);
+  const chain = chainField($('chain-mass-ratio')?.value);  // no name: not part of the URL state
+  $('chain-error').textContent = chain instanceof Error ? chain.message : '';
+  if (chain && !(chain instanceof Error)) request.chain = chain;
   results.classList.add('stale');
   let tune;
   try {
@@ -154,6 +158,7 @@ async function runTune() {
   showNumbers(results, tune);
   showStability(results, tune, Number(state.fps), Number(state.substeps));
   showEngines(results, tune);
+  showChain(document, tune);
   const series = responseSeries(tune);
   drawResponse($('plot-response'), series);
   $('response-note').textContent = sameCurve(series.methods.soft, series.methods.implicit_euler)

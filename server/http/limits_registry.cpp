@@ -14,6 +14,7 @@
 #include "codec/verify_codec.h"
 #include "http/limits.h"
 #include "softtune/accuracy.h"
+#include "softtune/chain_design.h"
 #include "softtune/engines/verify.h"
 #include "softtune/render/frame_pipeline.h"
 #include "softtune/render/renderer.h"
@@ -201,8 +202,16 @@ std::vector<LimitRow> request_rows() {
            figure(codec::kMaxObserveSteps) + ", frequency ratio <= " + figure(codec::kMaxFrequencyRatio) + ", step " +
            figure(codec::kMinStep) + " to " + figure(codec::kMaxStep) + " s, stiffness <= " +
            figure(codec::kMaxStiffness) + " N/m, mass ratio <= " + figure(codec::kMaxMassRatio) +
-           ", chain iterations <= " + figure(codec::kMaxChainIterations),
+           ", chain iterations <= " + figure(codec::kMaxChainIterations) + ", chain solvers 1 to " +
+           figure(kAllChainSolvers.size()) + " names",
        "`server/codec/stability_codec.h`", "422 naming the field"},
+      {"tune `chain`",
+       "mass_ratio 1 to " + figure(codec::kMaxMassRatio) + " (required), margin 1 to " + figure(kMaxChainMargin) +
+           ", solvers 1 to " + figure(kAllChainSolvers.size()) + " names; the fewest-count search stops at " +
+           figure(kMaxDesignCount) + " (`null` beyond)",
+       "`server/codec/stability_codec.h` `kMaxMassRatio`; `core/include/softtune/chain_design.h` `kMaxChainMargin`, "
+       "`kMaxDesignCount`",
+       "422 naming `chain.<field>`"},
       {"verify request",
        "at most " + figure(codec::kVerifyMaxEngines) + " engine names; duration_s in (0, " +
            figure(engines::kVerifyMaxDuration) + "] s and duration x fps x substeps <= " +
