@@ -129,8 +129,9 @@ export function aligned(curves) {
 
 const PROBE_COLORS = ['#1f6feb', '#d1242f', '#1a7f37', '#bf8700', '#8250df', '#0a7ea4', '#cf222e', '#57606a'];
 
-/// The simulation's probes over time (POST /api/v1/simulate `probes[].series`), one line per probe.
-export function drawSimulation(el, probes) {
+/// The simulation's probes over time (POST /api/v1/simulate `probes[].series`), one line per probe, on one
+/// axis per unit: metres on the left, radians on the right (probeUnit, web/simulate_panel.js).
+export function drawSimulation(el, probes, unitOf) {
   resize.observe(el);
   const withSeries = probes.filter((p) => Array.isArray(p.series?.time) && p.series.time.length > 1);
   if (withSeries.length === 0) {
@@ -138,11 +139,18 @@ export function drawSimulation(el, probes) {
     return;
   }
   const curves = withSeries.map((p) => p.series.time.map((t, i) => [t, p.series.value[i]]).filter(([t]) => t !== null));
+  const units = [...new Set(withSeries.map((p) => unitOf(p.kind)))];
+  const axes = [{ label: 'time (s)', values: fmtAxis(3) }, ...units.map((u, i) => ({
+    scale: u, label: u === 'rad' ? 'angle (rad)' : 'length (m)', values: fmtAxis(3), size: 60, side: i === 0 ? 3 : 1,
+    grid: { show: i === 0 },
+  }))];
   draw(el, {
-    scales: { x: { time: false } },
-    axes: [{ label: 'time (s)', values: fmtAxis(3) }, { label: 'probe value', values: fmtAxis(3), size: 60 }],
+    scales: { x: { time: false }, ...Object.fromEntries(units.map((u) => [u, {}])) },
+    axes,
     series: [{ label: 't (s)' }, ...withSeries.map((p, i) => ({
-      label: p.id, stroke: PROBE_COLORS[i % PROBE_COLORS.length], width: 1.5, spanGaps: true,
+      label: `${p.id} (${unitOf(p.kind)})`, scale: unitOf(p.kind), stroke: PROBE_COLORS[i % PROBE_COLORS.length], width: 1.5,
+      spanGaps: true,
     }))],
   }, aligned(curves));
+  el.dataset.units = units.join(' ');
 }

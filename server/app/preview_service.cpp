@@ -1,5 +1,6 @@
 #include "app/preview_service.h"
 
+#include "app/scene_tuning.h"
 #include "app/simulate_app.h"
 
 #include <algorithm>
@@ -44,6 +45,7 @@ void plan_oscillator(PreviewPlan& plan, const TuneRequest& request, double initi
   render::OscillatorScene scene = render::oscillator_scene(request, tune(request));
   scene.initial_displacement_m = initial_displacement;
   plan.canonical = "oscillator:" + canonical_oscillator_request(scene);
+  plan.frame_dt_s = 1.0 / scene.fps;  // one frame per game frame (oscillator_frames.h)
   const int frames = plan.settings.frames;
   auto stages = plan.prepare_stages;
   plan.make_frames = [scene, frames, stages] {
@@ -66,6 +68,7 @@ void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::M
   options.record_frames = true;
   options.frame_stride = plan.settings.frames > 1 ? std::max(1, total / (plan.settings.frames - 1)) : 1;
   options.mass_model = mass_model;
+  plan.frame_dt_s = options.frame_stride / scene.world.fps;
   plan.canonical = "scene:" + scene_doc.dump() + "|mass_model:" +
                    (mass_model ? std::string(scene::mass_model_name(*mass_model)) : "scene") +
                    "|stride:" + std::to_string(options.frame_stride);
@@ -104,7 +107,9 @@ PreviewPlan plan_preview(const json& request, const std::string& presets_dir) {
   if (oscillator_preset) {
     r.raw("preset");
     double x0 = 0.5;
-    const json tuning = oscillator_preset_tuning(load_preset(presets_dir, "oscillator"), x0);
+    json preset = load_preset(presets_dir, "oscillator");
+    if (const json* t = r.raw("tuning")) apply_scene_tuning(preset, *t);
+    const json tuning = oscillator_preset_tuning(preset, x0);
     plan_oscillator(plan, decode_tune_request(tuning), x0);
   } else if (r.has("preset") || r.has("scene")) {
     plan_scene(plan, requested_scene_document(r, request, presets_dir, {}), mass_model);
@@ -174,6 +179,7 @@ json PreviewService::start(const json& request, const std::string& presets_dir, 
     all.append(job->wait()->stages);
     out["stages"] = stages_json(all);
   }
+  out["frame_dt_s"] = plan.frame_dt_s;
   out["warnings"] = plan.warnings;
   return out;
 }

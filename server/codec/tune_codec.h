@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "codec/json_reader.h"
+#include "softtune/analytic.h"
 #include "softtune/tune.h"
 
 namespace softtune::codec {
@@ -18,5 +19,8 @@ TuneRequest read_tune_fields(ObjectReader& r);
 /// The response object (field list: docs/api.md, "softtune tune").
 nlohmann::json encode_tune_result(const TuneRequest& request, const TuneResult& result);
 
+/// {duration_s, step_matrix, smooth: {dt_s, x}}: the exact motion a plot draws the methods against, so a
+/// client needs no copy of the closed form (docs/api.md, "exact_motion").
+nlohmann::json encode_exact_motion(const ExactMotion& motion);
 
 }  // namespace softtune::codec
