@@ -26,8 +26,10 @@ const player = new PreviewPlayer($('preview-panel'));
 
 buildBodies($('bodies'), $('body-template'));
 
-/// The defaults are the values written in index.html; the URL carries only what differs from them.
+/// The defaults are the values written in index.html; the URL carries only what differs from them, or,
+/// with a preset, from that preset's own step and tuning (so `?preset=stiff` is the stiff preset as it is).
 const DEFAULTS = readForm(form);
+let urlDefaults = DEFAULTS;
 
 const channels = { tune: new Latest(), simulate: new Latest(), accuracy: new Latest(), preview: new Latest() };
 let words = {};          // oscillation word -> damping ratio, from the server's OpenAPI document
@@ -102,7 +104,7 @@ function syncControls() {
 // of the same drag or typing replace it, and the change event closes it.
 let entryOpen = false;
 function updateUrl(commit) {
-  const query = toQuery(readForm(form), DEFAULTS);
+  const query = toQuery(readForm(form), urlDefaults);
   const url = query ? `?${query}` : location.pathname;
   if (`${location.pathname}${location.search}` !== (query ? `${location.pathname}?${query}` : location.pathname)) {
     if (entryOpen) history.replaceState(null, '', url);
@@ -278,6 +280,8 @@ function showPresetJoints(state, doc) {
     ? 'This scene has no designer-tuned joint: the tuning changes only its step (fps, substeps); the numbers tune the body below.'
     : `The numbers describe ${picked}: ${fmt(joints.find((j) => j.id === picked)?.model_mass)} ${joints.find((j) => j.id === picked)?.angular ? 'kg m²' : 'kg'} of effective mass from its bodies. Every joint listed takes this tuning.`;
   if (first) {
+    // The first joint is the preset's default: a link names a joint only when it picks another.
+    urlDefaults = { ...urlDefaults, joint: joints[0]?.id ?? '' };
     syncControls();
     if (picked !== state.joint) updateUrl(true);
   }
@@ -354,6 +358,7 @@ async function runPreview(state, tune) {
     return;
   }
   const request = previewRequest(state, tune, presetScene);
+  $('preview').dataset.request = JSON.stringify(request);  // what this preview shows, for tests and tools
   try {
     const doc = await tracked(channels.preview.run(async (signal) => {
       player.rendering(null);
@@ -378,7 +383,6 @@ async function runPreview(state, tune) {
     const ms = doc.timings?.wall_ms;
     const rendered = doc.fromCache ? ' (from the cache)' : ms !== undefined && ms !== null ? `, rendered in ${fmt(Math.round(ms))} ms` : '';
     note.textContent = `${n} frames${seconds}${rendered}`;
-    $('preview').dataset.request = JSON.stringify(request);
   } catch (e) {
     if (!(e instanceof ApiError)) throw e;
     player.clear();
@@ -395,6 +399,7 @@ async function runPreview(state, tune) {
 async function loadPreset(name, adopt) {
   presetScene = null;
   presetJoints = null;
+  urlDefaults = DEFAULTS;
   $('preset-note').textContent = '';
   $('joints').querySelector('tbody').replaceChildren();
   if (name) {
@@ -402,8 +407,11 @@ async function loadPreset(name, adopt) {
     if ($('preset').value !== name) return;
     presetScene = scene;
     $('preset-note').textContent = scene?.description ?? note;
-    if (adopt && scene) writeForm(form, { ...stateFromScene(scene, words), joint: '' });
+    if (scene) urlDefaults = { ...DEFAULTS, ...stateFromScene(scene, words) };
+    writeForm(form, adopt ? { ...urlDefaults, preset: name } : fromQuery(location.search, urlDefaults, words));
     if (scene && !isBox2dScene(scene)) presetJoints = [];
+  } else if (!adopt) {
+    writeForm(form, fromQuery(location.search, DEFAULTS, words));
   }
   syncControls();
   if (adopt) updateUrl(true);
@@ -422,10 +430,13 @@ $('copy-link').addEventListener('click', async (e) => {
 });
 window.addEventListener('popstate', async () => {
   const before = $('preset').value;
-  writeForm(form, fromQuery(location.search, DEFAULTS, words));
+  const named = fromQuery(location.search, DEFAULTS, words).preset;
   entryOpen = false;
-  if ($('preset').value !== before) await loadPreset($('preset').value, false);
-  else {
+  if (named !== before) {
+    $('preset').value = named;
+    await loadPreset(named, false);
+  } else {
+    writeForm(form, fromQuery(location.search, urlDefaults, words));
     syncControls();
     scheduleTune();
   }

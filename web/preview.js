@@ -120,7 +120,8 @@ export class PreviewPlayer {
     this.#startedAt = performance.now() - this.#index * this.#dt * 1000;
     const tick = (now) => {
       // The frame of this moment in scene time, looping: real time whatever the display's refresh rate.
-      const n = Math.floor((now - this.#startedAt) / (this.#dt * 1000)) % this.#frames.length;
+      // (rAF's timestamp may precede the start by a fraction of a frame: never a negative index.)
+      const n = Math.max(0, Math.floor((now - this.#startedAt) / (this.#dt * 1000))) % this.#frames.length;
       if (n !== this.#index) this.#show(n);
       this.#raf = requestAnimationFrame(tick);
     };

@@ -59,7 +59,7 @@ export function tunedJoints(doc) {
 export function showJoints(tbody, joints, picked) {
   tbody.replaceChildren(...joints.map((j) => {
     const unit = j.angular ? ['kg m²', 'N m/rad', 'N m s/rad'] : ['kg', 'N/m', 'N s/m'];
-    const tr = row([j.id, j.type, `${fmt(j.effective_mass)} ${unit[0]}`, `${fmt(j.k)} ${unit[1]}`, `${fmt(j.c)} ${unit[2]}`],
+    const tr = row([`${j.id} (${j.type})`, `${fmt(j.effective_mass)} ${unit[0]}`, `${fmt(j.k)} ${unit[1]}`, `${fmt(j.c)} ${unit[2]}`],
       { joint: j.id });
     if (j.id === picked) tr.classList.add('picked');
     return tr;

@@ -60,14 +60,14 @@ TEST(SceneTuning, RefusesABadTuningAtItsField) {
   EXPECT_EQ(refused_field({{"response_frames", 12}, {"oscillation", "some"}, {"substeps", 0}}), "tuning.substeps");
   EXPECT_EQ(refused_field({{"oscillation", "some"}}), "tuning.response_frames");
   EXPECT_EQ(refused_field({{"response_frames", 12}}), "tuning.oscillation");
-  EXPECT_EQ(refused_field({{"response_frames", 12}, {"oscillation", "some"}, {"damping_ratio", 0.5}}), "tuning.damping_ratio");
+  EXPECT_EQ(refused_field({{"response_frames", 12}, {"oscillation", "some"}, {"damping_ratio", 0.5}}), "tuning.oscillation");
 }
 
 // The tuning reaches Box2D: the preset asks 20 frames at 60 fps (3 Hz); tuned to 40 frames, each wheel joint
 // gets k = m_eff (2 pi 1.5 Hz)^2 and c = 2 zeta m_eff omega on its own effective mass (standard mode), and the
 // rear suspension's travel swings measurably slower.
 TEST(SceneTuning, AVehicleTunedSlowerGetsTheSoftSpringItAskedFor) {
-  const std::string dir = softtune::app::resolve_presets_dir();
+  const std::string dir = SOFTTUNE_PRESETS_DIR;
   const json preset = softtune::app::run_simulate({{"preset", "vehicle"}}, dir);
   const json tuned = softtune::app::run_simulate(
       {{"preset", "vehicle"}, {"tuning", {{"response_frames", 40}, {"oscillation", "some"}, {"mode", "standard"}}}}, dir);

@@ -8,7 +8,8 @@ import { readFileSync } from 'node:fs';
 import { fromQuery, presetRequest, previewFrames, stateFromScene, toQuery, tuneRequest } from '../../web/state.js';
 
 const softtune = process.env.SOFTTUNE_BIN ?? 'build/softtune';
-const simulate = (request) => JSON.parse(execFileSync(softtune, ['simulate', '--request', '-'], { input: JSON.stringify(request), encoding: 'utf8' }));
+const presets = new URL('../../presets', import.meta.url).pathname;
+const simulate = (request) => JSON.parse(execFileSync(softtune, ['simulate', '--request', '-', '--presets', presets], { input: JSON.stringify(request), encoding: 'utf8' }));
 // The oscillation words as the server documents them (the page reads the same field at start).
 const WORDS = JSON.parse(readFileSync(new URL('../../server/http/openapi.json', import.meta.url))).components.schemas
   .TuneRequest.properties.oscillation['x-damping-ratio'];
