@@ -4,8 +4,11 @@
 // tuned by the server (`tuning` of simulate and preview), so its preview and its simulation follow the
 // controls. Hooks for tests and tools: data-testid on values, plots and the preview image, and
 // body[data-pending] = requests in flight or scheduled.
+import { Comparison } from './ab.js';
 import { buildBodies } from './bodies.js';
+import { drawConstraint, showMassTerms } from './constraint_view.js';
 import { ApiError, Latest, callJson, debounce, hasRoute, loadRoutes, oscillationWords } from './api.js';
+import { download, exportName, stateFromDocument } from './exchange.js';
 import { designerMessage, inputProblems } from './input_check.js';
 import { responseSeries } from './oscillator.js';
 import { drawError, drawResponse, drawSimulation, drawWorkPrecision, showUnavailable } from './plots.js';
@@ -23,6 +26,8 @@ const results = document.getElementById('results');
 const status = document.getElementById('status');
 const $ = (id) => document.getElementById(id);
 const player = new PreviewPlayer($('preview-panel'));
+const comparison = new Comparison(document.querySelector('main'), $('preview'), $('preview-a'));
+let lastSeries = null;  // the response series of the answer shown, for pinning it as A
 
 buildBodies($('bodies'), $('body-template'));
 
@@ -190,7 +195,8 @@ function refuseInput() {
 
 // ---- tune -----------------------------------------------------------------------------------------
 
-const scheduleTune = trackedDebounce(runTune, 120);
+// Short waits: a drag sends few requests (a newer one aborts the older), yet the numbers follow at once.
+const scheduleTune = trackedDebounce(runTune, 30);
 
 async function runTune() {
   if (refuseInput()) return;
@@ -225,15 +231,35 @@ async function runTune() {
   results.classList.remove('stale');
   showSummary($('summary'), tune, joint ? `joint ${joint.id}` : '');
   showNumbers(results, tune);
+  comparison.showNumbers();
+  $('mass-terms').hidden = !showMassTerms($('mass-terms-table').querySelector('tbody'), tune, state.ctype === 'angular');
+  if (!$('mass-terms').hidden) drawConstraint($('constraint-drawing'), state);
   showStability(results, tune, Number(state.fps), Number(state.substeps));
   showEngines(results, tune);
   const series = responseSeries(tune);
-  drawResponse($('plot-response'), series);
+  lastSeries = series;
+  drawResponse($('plot-response'), series, chosenMethod(tune), comparison.pinned?.series);
   $('response-note').textContent = sameCurve(series.methods.soft, series.methods.implicit_euler)
     ? 'The soft constraint and implicit Euler draw one curve: they are the same integrator (Catto, GDC 2011).' : '';
   drawError($('plot-error'), series);
   scheduleSlow(state, request, tune);
 }
+
+const chosenMethod = (tune) => (tune.mode === 'exact' ? 'soft_exact' : 'soft');
+
+function describeTuning(state) {
+  const feel = state.osc ? `${state.osc} oscillation` : `damping ratio ${state.zeta}`;
+  return `${state.preset || 'custom'}, ${state.frames} frames, ${feel}, ${state.mode}`;
+}
+
+$('pin').addEventListener('click', () => {
+  const tune = window.softtune?.tune;
+  if (comparison.pinned || !tune) comparison.unpin();
+  else comparison.pin(tune, lastSeries, chosenMethod(tune), { frames: player.frames, dt: player.frameSeconds }, describeTuning(readForm(form)));
+  $('pin').textContent = comparison.pinned ? 'Unpin A' : 'Pin as A';
+  $('pin').setAttribute('aria-pressed', comparison.pinned ? 'true' : 'false');
+  scheduleTune();
+});
 
 function sameCurve(a, b) {
   return a && b && a.every((x, i) => (x === null ? b[i] === null : Math.abs(x - b[i]) <= 1e-9));
@@ -241,11 +267,13 @@ function sameCurve(a, b) {
 
 // ---- the slower panels: simulate, accuracy, preview ------------------------------------------------
 
+// The preview first: it is what a designer watches. The wait lets a drag settle before frames are
+// rendered (a render in the pool is not cancelled when a newer tuning arrives).
 const scheduleSlow = trackedDebounce((state, request, tune) => {
+  runPreview(state, tune);
   runSimulate(state, tune);
   runAccuracy(request);
-  runPreview(state, tune);
-}, 350);
+}, 100);
 
 function unavailable(what) {
   return `${what} is not available on this server.`;
@@ -366,11 +394,17 @@ async function runPreview(state, tune) {
       // "From the cache" only when the first answer already had every frame from it.
       const fromCache = first.cached === true && Array.isArray(first.frames);
       let answer = first;
-      // A preview still rendering answers with its id and progress: ask again until the frames are listed.
+      let shownFirst = false;
+      // A preview still rendering answers with its id and progress: ask again until the frames are listed,
+      // showing frame 0 as soon as it is encoded (frames stream).
       while (!Array.isArray(answer.frames) && answer.id) {
         if (answer.status === 'failed') throw new ApiError(500, { detail: 'the preview failed to render' });
         player.rendering(answer.progress ?? answer);
-        await new Promise((r) => setTimeout(r, 100));
+        if (!shownFirst && answer.progress?.ready >= 1 && answer.progress_url) {
+          player.first(`${answer.progress_url}/0.png`);
+          shownFirst = true;
+        }
+        await new Promise((r) => setTimeout(r, 50));
         if (signal.aborted) throw new DOMException('aborted', 'AbortError');
         answer = await callJson('GET', `api/v1/preview/${encodeURIComponent(answer.id)}`, undefined, signal);
       }
@@ -428,7 +462,34 @@ $('copy-link').addEventListener('click', async (e) => {
   e.target.textContent = (await copyText(location.href)) ? 'Link copied' : 'Copy failed';
   setTimeout(() => { e.target.textContent = 'Copy link'; }, 1500);
 });
-window.addEventListener('popstate', async () => {
+$('export').addEventListener('click', () => {
+  const state = readForm(form);
+  download(simulateRequest(state, window.softtune?.tune ?? {}), exportName(state));
+});
+$('import').addEventListener('change', async (e) => {
+  const file = e.target.files?.[0];
+  e.stopPropagation();
+  if (!file) return;
+  try {
+    const next = stateFromDocument(JSON.parse(await file.text()), words);
+    // The URL holds what differs from the preset's own tuning, so that scene is read first.
+    let defaults = DEFAULTS;
+    if (next.preset) {
+      const { scene } = await fetchPresetScene(next.preset);
+      if (scene) defaults = { ...DEFAULTS, ...stateFromScene(scene, words) };
+    }
+    const query = toQuery({ ...defaults, ...next }, defaults);
+    history.pushState(null, '', query ? `?${query}` : location.pathname);
+    $('form-error').textContent = '';
+    await restoreFromUrl();
+  } catch (err) {
+    $('form-error').textContent = `Import refused: ${err.message}`;
+  }
+  e.target.value = '';
+});
+
+/// The controls of the address bar's query (a history step, an import).
+async function restoreFromUrl() {
   const before = $('preset').value;
   const named = fromQuery(location.search, DEFAULTS, words).preset;
   entryOpen = false;
@@ -440,7 +501,8 @@ window.addEventListener('popstate', async () => {
     syncControls();
     scheduleTune();
   }
-});
+}
+window.addEventListener('popstate', restoreFromUrl);
 
 busy(0);
 await loadRoutes();

@@ -29,11 +29,71 @@ function draw(el, opts, data) {
   const chart = new uPlot({ width: width(el), height: height(el), ...opts }, data, el);
   charts.set(el, chart);
   el.dataset.points = String(data[0].length);
+  tableBehind(el, opts.series.map((s) => s.label), data);
+}
+
+/// Rows a plot's data table shows at most (every n-th sample beyond that).
+export const TABLE_ROWS = 200;
+
+/// The plot's numbers as a table (accessibility: what the chart shows, for a screen reader or a copy),
+/// behind a "Data table" disclosure after the chart; built when opened, so redraws stay cheap.
+function tableBehind(el, labels, data) {
+  let details = el.parentElement.querySelector(`details[data-for="${el.id}"]`);
+  if (!details) {
+    details = document.createElement('details');
+    details.dataset.for = el.id;
+    details.className = 'data-table';
+    details.addEventListener('toggle', () => fillTable(details));
+    el.after(details);
+  }
+  details.hidden = false;
+  details.plot = { labels, data };
+  fillTable(details);
+}
+
+function fillTable(details) {
+  const summary = document.createElement('summary');
+  summary.textContent = 'Data table';
+  if (!details.open || !details.plot) {
+    details.replaceChildren(summary);
+    return;
+  }
+  const { labels, data } = details.plot;
+  const n = data[0].length;
+  const step = Math.max(1, Math.ceil(n / TABLE_ROWS));
+  const table = document.createElement('table');
+  const head = table.createTHead().insertRow();
+  for (const label of labels) {
+    const th = document.createElement('th');
+    th.scope = 'col';
+    th.textContent = label;
+    head.append(th);
+  }
+  const body = table.createTBody();
+  for (let i = 0; i < n; i += step) {
+    const tr = body.insertRow();
+    data.forEach((column, j) => {
+      const cell = document.createElement(j === 0 ? 'th' : 'td');
+      if (j === 0) cell.scope = 'row';
+      const v = column[i];
+      cell.textContent = v === null || v === undefined ? '' : Number(v.toPrecision(6)).toString();
+      tr.append(cell);
+    });
+  }
+  const note = document.createElement('p');
+  note.className = 'note';
+  note.textContent = step > 1 ? `Every ${step}th of ${n} points.` : `${n} points.`;
+  const wrap = document.createElement('div');
+  wrap.className = 'scroll';
+  wrap.append(table);
+  details.replaceChildren(summary, note, wrap);
 }
 
 export function showUnavailable(el, text) {
   charts.get(el)?.destroy();
   charts.delete(el);
+  const details = el.parentElement?.querySelector(`details[data-for="${el.id}"]`);
+  if (details) details.hidden = true;
   el.classList.add('unavailable');
   el.textContent = text;
   el.dataset.points = '0';
@@ -57,11 +117,14 @@ const fmtAxis = (digits) => (u, vals) => vals.map((v) => (v === null ? '' : Numb
 const logAxis = (u, vals) => vals.map((v) => (v === null ? '' : v.toExponential(0).replace('e+', 'e')));
 
 /// Response plot: time (s) against x for the exact motion (on its fine grid) and each method (at its steps).
-export function drawResponse(el, series) {
+/// `chosen` (the mode's soft method) is drawn thick, the others thin, so the one the designer gets stands
+/// out; `pinned` (A of an A/B comparison: {t, x}) is A's chosen method, drawn grey and dashed.
+export function drawResponse(el, series, chosen, pinned) {
   resize.observe(el);
   const names = METHODS.filter((m) => series.methods[m]);
   const zip = (t, x) => t.map((ti, i) => [ti, x[i]]);
-  const data = aligned([zip(series.smooth.t, series.smooth.x), ...names.map((m) => zip(series.t, series.methods[m]))]);
+  const curves = [zip(series.smooth.t, series.smooth.x), ...names.map((m) => zip(series.t, series.methods[m]))];
+  if (pinned) curves.push(zip(pinned.t, pinned.x));
   draw(el, {
     scales: {
       x: { time: false },
@@ -72,8 +135,10 @@ export function drawResponse(el, series) {
     series: [{ label: 't (s)' },
       { label: 'exact', stroke: COLORS.exact, width: 2.5, dash: [6, 4], spanGaps: true, points: { show: false } },
       // Markers at each step while they are few enough to tell apart: they show where the method samples.
-      ...methodSeries(names, { spanGaps: true, points: { show: series.t.length <= 200 } })],
-  }, data);
+      ...names.map((m) => ({ label: m === chosen ? `${METHOD_LABELS[m]} (chosen)` : METHOD_LABELS[m], stroke: COLORS[m],
+        width: m === chosen ? 3.5 : 1.2, spanGaps: true, points: { show: series.t.length <= 200 && m === chosen } })),
+      ...(pinned ? [{ label: `A: ${pinned.label}`, stroke: '#8c959f', width: 2.5, dash: [3, 3], spanGaps: true, points: { show: false } }] : [])],
+  }, aligned(curves));
 }
 
 /// Error plot: time (s) against |x_method - x_exact|, log scale.

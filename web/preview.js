@@ -35,6 +35,11 @@ export class PreviewPlayer {
     return this.#raf !== 0;
   }
 
+  /// The frame URLs shown now (A/B keeps them when this tuning is pinned).
+  get frames() {
+    return this.#frames;
+  }
+
   /// Seconds of scene time between frames (for tests and tools).
   get frameSeconds() {
     return this.#dt;
@@ -49,6 +54,15 @@ export class PreviewPlayer {
       this.progress.removeAttribute('value');
     }
     this.progress.hidden = false;
+  }
+
+  /// Frames stream: the first frame of a preview still rendering, shown as soon as the server has it
+  /// (progress.ready >= 1), before the rest are done.
+  first(url) {
+    this.#stop();
+    this.img.src = url;
+    this.img.dataset.frame = '0';
+    this.out.textContent = 'first frame; the others are rendering';
   }
 
   /// A finished preview: frame URLs, the filmstrip URL and the seconds between frames. Every frame is

@@ -131,12 +131,12 @@ json PreviewService::answer(const render::PreviewJob& job, const std::string& ur
   const render::PreviewProgress p = job.progress();
   if (!p.finished) {
     return {{"id", job.id()}, {"status", p.failed ? "failed" : "rendering"},
-            {"progress", {{"done", p.done}, {"total", p.total}}}, {"progress_url", base}};
+            {"progress", {{"done", p.done}, {"total", p.total}, {"ready", p.ready}}}, {"progress_url", base}};
   }
   json out = encode_preview(*job.wait(), job.from_cache(), [&base](int n) { return base + "/" + std::to_string(n) + ".png"; },
                             base + "/filmstrip.png");
   out["status"] = "done";
-  out["progress"] = {{"done", p.done}, {"total", p.total}};
+  out["progress"] = {{"done", p.done}, {"total", p.total}, {"ready", p.ready}};
   out["progress_url"] = base;
   return out;
 }
@@ -191,9 +191,13 @@ std::optional<json> PreviewService::status(const std::string& id, const std::str
 }
 
 std::optional<std::string> PreviewService::frame_png(const std::string& id, int n) {
-  const auto preview = pipeline_.cached(id);
-  if (!preview || n < 0 || n >= static_cast<int>(preview->frames_png.size())) return std::nullopt;
-  return preview->frames_png[n];
+  if (const auto preview = pipeline_.cached(id)) {
+    if (n < 0 || n >= static_cast<int>(preview->frames_png.size())) return std::nullopt;
+    return preview->frames_png[n];
+  }
+  // Frames stream: one already encoded is served while the others still render.
+  const auto job = pipeline_.find(id);
+  return job ? job->frame_png(n) : std::nullopt;
 }
 
 std::optional<std::string> PreviewService::filmstrip_png(const std::string& id) {

@@ -341,4 +341,9 @@ json encode_exact_motion(const ExactMotion& m) {
           {"smooth", {{"dt_s", number_or_null(m.smooth_dt_s)}, {"x", std::move(x)}}}};
 }
 
+json encode_mass_terms(const InverseMassTerms& t) {
+  return {{"body_a", {{"translational", number_or_null(t.a_translational)}, {"rotational", number_or_null(t.a_rotational)}}},
+          {"body_b", {{"translational", number_or_null(t.b_translational)}, {"rotational", number_or_null(t.b_rotational)}}}};
+}
+
 }  // namespace softtune::codec

@@ -5,6 +5,7 @@
 
 #include "codec/json_reader.h"
 #include "softtune/analytic.h"
+#include "softtune/effective_mass_terms.h"
 #include "softtune/tune.h"
 
 namespace softtune::codec {
@@ -22,5 +23,8 @@ nlohmann::json encode_tune_result(const TuneRequest& request, const TuneResult& 
 /// {duration_s, step_matrix, smooth: {dt_s, x}}: the exact motion a plot draws the methods against, so a
 /// client needs no copy of the closed form (docs/api.md, "exact_motion").
 nlohmann::json encode_exact_motion(const ExactMotion& motion);
+
+/// {body_a: {translational, rotational}, body_b: {...}}: the terms of 1 / m_eff (docs/api.md).
+nlohmann::json encode_mass_terms(const InverseMassTerms& terms);
 
 }  // namespace softtune::codec

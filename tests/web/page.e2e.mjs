@@ -479,3 +479,51 @@ test('units agree across tables, the stiff preset shows its blow-ups, and the su
   await page.close();
   assert.deepEqual(consoleErrors, [], 'no console errors');
 });
+
+test('A/B against a pinned tuning, export and import as a simulate request, a constraint\'s mass terms, data tables', async () => {
+  const page = await openPage(`${base}?body=constraint&b_mass=3&b_inertia=0.4`, { width: 1440, height: 900 });
+  // The effective mass term by term (item 6): body B 3 kg, I 0.4, anchor 0.5 m across the x axis.
+  const terms = await page.getByTestId('mass-terms').locator('td').evaluateAll((tds) => tds.map((td) => Number(td.dataset.value)));
+  assert.ok(Math.abs(terms[2] - 1 / 3) < 1e-12 && Math.abs(terms[3] - 0.25 / 0.4) < 1e-12 && terms[0] === 0 && terms[1] === 0, `${terms}`);
+  assert.ok(Math.abs(1 / terms[4] - Number(await page.getByTestId('effective-mass').getAttribute('data-value'))) < 1e-12);
+  assert.ok(await page.locator('#constraint-drawing circle.anchor').count() === 2, 'the drawing shows both anchors');
+
+  // Pin A, change to B: the numbers show both, the response plot overlays A, the modes stand out.
+  const kA = Number(await page.getByTestId('k').getAttribute('data-value'));
+  await page.getByTestId('pin').click();
+  await setControl(page, '#frames', '30');
+  await settled(page);
+  assert.equal(Number(await page.getByTestId('a-k').getAttribute('data-value')), kA);
+  assert.notEqual(Number(await page.getByTestId('k').getAttribute('data-value')), kA);
+  const legend = await page.getByTestId('plot-response').locator('.u-legend .u-series').allTextContents();
+  assert.ok(legend.some((l) => l.startsWith('A:')), legend.join('|'));
+  assert.ok(legend.some((l) => l.includes('Soft constraint (chosen)')), legend.join('|'));
+  await page.waitForFunction(() => !document.getElementById('preview-a').hidden && document.getElementById('preview-a').naturalWidth > 0,
+    null, { timeout: 30000 });
+  assert.notEqual(await page.getByTestId('preview-a').getAttribute('src'), await page.getByTestId('preview').getAttribute('src'));
+
+  // Each plot has its numbers as a table behind it (item 10).
+  const details = page.locator('details[data-for="plot-response"]');
+  await details.locator('summary').click();
+  assert.ok(await details.locator('tbody tr').count() > 10);
+
+  // Export: a file `softtune simulate --request` accepts as it is (item 8).
+  const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#export').click()]);
+  const file = path.join(shotDir, 'page-export.json');
+  await download.saveAs(file);
+  const { execFileSync } = await import('node:child_process');
+  const out = JSON.parse(execFileSync(softtune, ['simulate', '--request', file, '--presets', path.join(root, 'presets')], { encoding: 'utf8' }));
+  assert.equal(out.probes[0].requested.frequency_hz, 2, '30 frames at 60 fps');
+  // Import a preset request: the controls take it.
+  const { writeFileSync } = await import('node:fs');
+  const preset = path.join(shotDir, 'page-import.json');
+  writeFileSync(preset, JSON.stringify({ preset: 'mouse', tuning: { response_frames: 15, oscillation: 'none', mode: 'exact' } }));
+  await page.locator('#import').setInputFiles(preset);
+  await page.waitForFunction(() => document.getElementById('preset').value === 'mouse');
+  await settled(page);
+  assert.equal(await page.locator('#frames').inputValue(), '15');
+  assert.equal(await page.getByLabel('none', { exact: true }).isChecked(), true);
+  assert.match(page.url(), /preset=mouse/);
+  await page.close();
+  assert.deepEqual(consoleErrors, [], 'no console errors');
+});
