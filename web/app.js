@@ -131,6 +131,7 @@ function onInput(event) {
   syncControls();
   updateUrl(event.type === 'change');
   scheduleTune();
+  if (box2dPreset(readForm(form))) schedulePreview();
 }
 
 // ---- errors next to their fields ------------------------------------------------------------------
@@ -197,6 +198,7 @@ function refuseInput() {
 
 // Short waits: a drag sends few requests (a newer one aborts the older), yet the numbers follow at once.
 const scheduleTune = trackedDebounce(runTune, 30);
+let tuneShown = 0;  // answers shown so far: a newer one drops the older one's plots
 
 async function runTune() {
   if (refuseInput()) return;
@@ -232,6 +234,10 @@ async function runTune() {
   showSummary($('summary'), tune, joint ? `joint ${joint.id}` : '');
   showNumbers(results, tune);
   comparison.showNumbers();
+  // Let the numbers paint before the tables and plots are built (a frame, then the rest).
+  const seq = ++tuneShown;
+  await tracked(new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0))));
+  if (seq !== tuneShown) return;
   $('mass-terms').hidden = !showMassTerms($('mass-terms-table').querySelector('tbody'), tune, state.ctype === 'angular');
   if (!$('mass-terms').hidden) drawConstraint($('constraint-drawing'), state);
   showStability(results, tune, Number(state.fps), Number(state.substeps));
@@ -274,6 +280,11 @@ const scheduleSlow = trackedDebounce((state, request, tune) => {
   runSimulate(state, tune);
   runAccuracy(request);
 }, 100);
+// A Box2D preset's preview needs no tune answer (the server tunes the scene): it starts with the change.
+const schedulePreview = trackedDebounce(() => {
+  const state = readForm(form);
+  if (box2dPreset(state) && inputProblems(form).length === 0) runPreview(state, null);
+}, 60);
 
 function unavailable(what) {
   return `${what} is not available on this server.`;
@@ -375,6 +386,8 @@ async function runAccuracy(request) {
   }
 }
 
+let lastPreview = '';  // the request of the preview shown or on its way
+
 async function runPreview(state, tune) {
   const note = $('preview-note');
   const panel = $('preview-panel');
@@ -386,7 +399,10 @@ async function runPreview(state, tune) {
     return;
   }
   const request = previewRequest(state, tune, presetScene);
-  $('preview').dataset.request = JSON.stringify(request);  // what this preview shows, for tests and tools
+  const text = JSON.stringify(request);
+  if (text === lastPreview) return;  // asked already (a preset's preview starts with the change)
+  lastPreview = text;
+  $('preview').dataset.request = text;  // what this preview shows, for tests and tools
   try {
     const doc = await tracked(channels.preview.run(async (signal) => {
       player.rendering(null);
@@ -418,6 +434,7 @@ async function runPreview(state, tune) {
     const rendered = doc.fromCache ? ' (from the cache)' : ms !== undefined && ms !== null ? `, rendered in ${fmt(Math.round(ms))} ms` : '';
     note.textContent = `${n} frames${seconds}${rendered}`;
   } catch (e) {
+    lastPreview = '';
     if (!(e instanceof ApiError)) throw e;
     player.clear();
     panel.hidden = e.unavailable;
