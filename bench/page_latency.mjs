@@ -44,6 +44,7 @@ const quantile = (xs, q) => {
 /// preview's first frame reaches the screen (an <img> load of a preview id not seen before).
 async function instrument(page) {
   await page.evaluate(() => {
+    performance.setResourceTimingBufferSize(100000);
     window.__lat = { numbers: [], frames: [] };
     const k = document.querySelector('[data-testid="k"]');
     new MutationObserver(() => window.__lat.numbers.push({ t: performance.now(), k: k.dataset.value })).observe(k, { attributes: true, attributeFilter: ['data-value'] });
@@ -74,7 +75,12 @@ async function change(page, frames) {
   await page.waitForFunction(() => window.__lat.numbers.length > 0 && window.__lat.frames.length > 0, null, { timeout: 60000 });
   // Let the rest of this preview render so the next change starts from an idle server.
   await page.waitForFunction(() => document.body.dataset.pending === '0' && document.getElementById('preview-progress').hidden, null, { timeout: 60000 });
-  return page.evaluate((start) => [window.__lat.numbers[0].t - start, window.__lat.frames[0].t - start], t0);
+  return page.evaluate((start) => {
+    // Where the time goes: the tune request's own start and end in the browser (resource timing).
+    const tune = performance.getEntriesByType('resource').find((e) => e.name.endsWith('/api/v1/tune') && e.startTime >= start);
+    return [window.__lat.numbers[0].t - start, window.__lat.frames[0].t - start, tune ? tune.startTime - start : NaN,
+      tune ? tune.responseEnd - start : NaN];
+  }, t0);
 }
 
 async function bareTune(base, request) {
@@ -94,18 +100,20 @@ try {
     await page.waitForFunction(() => document.body.dataset.pending === '0' && document.querySelector('[data-testid="k"]').textContent !== ''
       && document.querySelector('[data-testid="preview"]').naturalWidth > 0, null, { timeout: 60000 });
     await instrument(page);
-    const numbers = [], frames = [], bare = [];
+    const numbers = [], frames = [], bare = [], sends = [], answers = [];
     // Frames 5..120 in a scrambled order: each change a tuning this server has not seen (cold caches).
     const start = Number(await page.locator('#frames').inputValue());
     const values = Array.from({ length: CHANGES + 1 }, (_, i) => 5 + ((i * 37) % 116)).filter((v) => v !== start).slice(0, CHANGES);
     for (const v of values) {
-      const [n, f] = await change(page, v);
+      const [n, f, sent, answered] = await change(page, v);
       numbers.push(n);
       frames.push(f);
+      sends.push(sent);
+      answers.push(answered);
       // The same tuning's bare round trip, on a mass the page never sent (so the response cache is cold).
       bare.push(await bareTune(base, { fps: 60, substeps: 1, response_frames: v, basis_fps: 60, oscillation: 'some', mode: 'standard', effective_mass: mass * 1.001 }));
     }
-    rows.push({ label, numbers, frames, bare });
+    rows.push({ label, numbers, frames, bare, sends, answers });
     await page.close();
   }
 } finally {
@@ -120,4 +128,9 @@ console.log('| --- | --- | --- | --- | --- |');
 for (const r of rows) {
   console.log(`| ${r.label} | ${ms(quantile(r.bare, 0.5))} / ${ms(quantile(r.bare, 0.95))} | ${ms(quantile(r.numbers, 0.5))} / ${ms(quantile(r.numbers, 0.95))} | ` +
     `${ms(quantile(r.frames, 0.5))} / ${ms(quantile(r.frames, 0.95))} | ${(quantile(r.numbers, 0.5) / quantile(r.bare, 0.5)).toFixed(1)}x |`);
+}
+console.log('\n| scene | change -> tune request sent p50 | change -> tune answer in p50 | change -> numbers p50 |');
+console.log('| --- | --- | --- | --- |');
+for (const r of rows) {
+  console.log(`| ${r.label} | ${ms(quantile(r.sends, 0.5))} | ${ms(quantile(r.answers, 0.5))} | ${ms(quantile(r.numbers, 0.5))} |`);
 }
