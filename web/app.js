@@ -11,6 +11,7 @@ import { ApiError, Latest, callJson, debounce, hasRoute, loadRoutes, oscillation
 import { download, exportName, stateFromDocument } from './exchange.js';
 import { designerMessage, inputProblems } from './input_check.js';
 import { responseSeries } from './oscillator.js';
+import { drawLanes, oscillatorLanes } from './oscillator_lanes.js';
 import { drawError, drawResponse, drawSimulation, drawWorkPrecision, showUnavailable } from './plots.js';
 import { fetchPresetScene, fillJointPicker, fillPresetList, isBox2dScene } from './presets.js';
 import { PreviewPlayer } from './preview.js';
@@ -28,6 +29,12 @@ const $ = (id) => document.getElementById(id);
 const player = new PreviewPlayer($('preview-panel'));
 const comparison = new Comparison(document.querySelector('main'), $('preview'), $('preview-a'));
 let lastSeries = null;  // the response series of the answer shown, for pinning it as A
+let lanes = [];         // a preset's 1-D oscillators, drawn beside its preview at the same scene time
+new MutationObserver(() => {
+  if (lanes.length === 0) return;
+  const img = $('preview');
+  drawLanes($('lanes'), lanes, Number(img.dataset.frame ?? 0) * (Number(img.dataset.frameSeconds) || 0));
+}).observe($('preview'), { attributes: true, attributeFilter: ['data-frame'] });
 
 buildBodies($('bodies'), $('body-template'));
 
@@ -344,6 +351,8 @@ async function runSimulate(state, tune) {
     const doc = await tracked(channels.simulate.run((signal) => callJson('POST', 'api/v1/simulate', simulateRequest(state, tune), signal)));
     if (doc === Latest.stale) return;
     if (box2dPreset(state)) showPresetJoints(state, doc);
+    lanes = box2dPreset(state) ? oscillatorLanes(doc.probes) : [];
+    $('lanes-figure').hidden = lanes.length === 0;
     note.textContent = doc.stages ? `Stages run: ${doc.stages.join(', ')}` : '';
     figure.hidden = false;
     drawSimulation($('plot-simulation'), doc.probes ?? [], probeUnit);

@@ -209,8 +209,17 @@ export function drawSimulation(el, probes, unitOf) {
     scale: u, label: u === 'rad' ? 'angle (rad)' : 'length (m)', values: fmtAxis(3), size: 60, side: i === 0 ? 3 : 1,
     grid: { show: i === 0 },
   }))];
+  // A probe that blew up would flatten the others: each unit's axis spans the probes that did not
+  // (with a margin), and the blow-up leaves the plot at its edge.
+  const span = (u) => {
+    const values = withSeries.filter((p) => !p.diverged && unitOf(p.kind) === u).flatMap((p) => p.series.value)
+      .filter((v) => typeof v === 'number' && Number.isFinite(v));
+    if (values.length === 0) return {};
+    const lo = Math.min(...values), hi = Math.max(...values), pad = 0.15 * (hi - lo || Math.abs(hi) || 1);
+    return { range: [lo - pad, hi + pad] };
+  };
   draw(el, {
-    scales: { x: { time: false }, ...Object.fromEntries(units.map((u) => [u, {}])) },
+    scales: { x: { time: false }, ...Object.fromEntries(units.map((u) => [u, span(u)])) },
     axes,
     series: [{ label: 't (s)' }, ...withSeries.map((p, i) => ({
       label: `${p.id} (${unitOf(p.kind)})`, scale: unitOf(p.kind), stroke: PROBE_COLORS[i % PROBE_COLORS.length], width: 1.5,

@@ -460,6 +460,13 @@ test('units agree across tables, the stiff preset shows its blow-ups, and the su
     assert.equal(cells[1], 'blew up', `${probe}: ${cells}`);
   }
   assert.notEqual((await page.locator('#probes tr[data-probe="soft"] td').allTextContents())[1], 'blew up');
+  // Beside the preview, the 1-D springs at the preview's time: late in the run the Euler springs have blown
+  // up and the soft constraint has not (item 7).
+  await previewShown(page);
+  await page.locator('#scrub').evaluate((el) => { el.value = el.max; el.dispatchEvent(new Event('input', { bubbles: true })); });
+  await page.waitForFunction(() => document.getElementById('lanes').dataset.lane_explicit_euler === 'blew up', null, { timeout: 20000 });
+  assert.equal(await page.getByTestId('lanes').getAttribute('data-lane_semi_implicit_euler'), 'blew up');
+  assert.ok(Number.isFinite(Number(await page.getByTestId('lanes').getAttribute('data-lane_soft'))));
   // Damping errors are differences of ratios in both tables (a sign and three decimals), never percent.
   assert.match(await page.getByTestId('damping-error').textContent(), /^[+−]\d\.\d{3}$/);
   for (const cell of await page.locator('#probes tbody tr td:nth-child(7)').allTextContents()) assert.match(cell, /^([+−]\d+\.\d{3}|—)$/);
