@@ -508,6 +508,16 @@ test('A/B against a pinned tuning, export and import as a simulate request, a co
   await page.waitForFunction(() => !document.getElementById('preview-a').hidden && document.getElementById('preview-a').naturalWidth > 0,
     null, { timeout: 30000 });
   assert.notEqual(await page.getByTestId('preview-a').getAttribute('src'), await page.getByTestId('preview').getAttribute('src'));
+  // A pause is kept across new previews (item 2): the next tuning's frames load but do not play.
+  await page.waitForFunction(() => document.getElementById('play').getAttribute('aria-pressed') === 'true', null, { timeout: 20000 });
+  await page.locator('#play').click();
+  await setControl(page, '#frames', '31');
+  await settled(page);
+  const paused = await previewShown(page);
+  assert.equal(paused.request.response_frames, 31);
+  await page.waitForTimeout(300);
+  assert.equal(await page.locator('#play').getAttribute('aria-pressed'), 'false');
+  assert.equal(await page.getByTestId('preview').getAttribute('data-frame'), '0');
 
   // Each plot has its numbers as a table behind it (item 10).
   const details = page.locator('details[data-for="plot-response"]');
@@ -520,7 +530,7 @@ test('A/B against a pinned tuning, export and import as a simulate request, a co
   await download.saveAs(file);
   const { execFileSync } = await import('node:child_process');
   const out = JSON.parse(execFileSync(softtune, ['simulate', '--request', file, '--presets', path.join(root, 'presets')], { encoding: 'utf8' }));
-  assert.equal(out.probes[0].requested.frequency_hz, 2, '30 frames at 60 fps');
+  assert.ok(Math.abs(out.probes[0].requested.frequency_hz - 60 / 31) < 1e-12, '31 frames at 60 fps');
   // Import a preset request: the controls take it.
   const { writeFileSync } = await import('node:fs');
   const preset = path.join(shotDir, 'page-import.json');
