@@ -522,6 +522,7 @@ test('A/B against a pinned tuning, export and import as a simulate request, a co
   // Each plot has its numbers as a table behind it (item 10).
   const details = page.locator('details[data-for="plot-response"]');
   await details.locator('summary').click();
+  await details.locator('tbody tr').first().waitFor();  // built on the toggle event, which comes after the click
   assert.ok(await details.locator('tbody tr').count() > 10);
 
   // Export: a file `softtune simulate --request` accepts as it is (item 8).
