@@ -398,4 +398,18 @@ json encode_tune_result(const TuneRequest& q, const TuneResult& r) {
   return out;
 }
 
+json encode_exact_motion(const ExactMotion& m) {
+  const Eigen::Matrix2d& e = m.step_matrix;
+  json x = json::array();
+  for (double v : m.smooth_x) x.push_back(number_or_null(v));
+  return {{"duration_s", number_or_null(m.duration_s)},
+          {"step_matrix", {{number_or_null(e(0, 0)), number_or_null(e(0, 1))}, {number_or_null(e(1, 0)), number_or_null(e(1, 1))}}},
+          {"smooth", {{"dt_s", number_or_null(m.smooth_dt_s)}, {"x", std::move(x)}}}};
+}
+
+json encode_mass_terms(const InverseMassTerms& t) {
+  return {{"body_a", {{"translational", number_or_null(t.a_translational)}, {"rotational", number_or_null(t.a_rotational)}}},
+          {"body_b", {{"translational", number_or_null(t.b_translational)}, {"rotational", number_or_null(t.b_rotational)}}}};
+}
+
 }  // namespace softtune::codec

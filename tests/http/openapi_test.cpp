@@ -26,6 +26,7 @@
 #include "http/routes.h"
 #include "openapi_conformance.h"
 #include "softtune/accuracy.h"
+#include "softtune/designer.h"
 #include "softtune/render/frame_pipeline.h"
 #include "softtune/scene/limits.h"
 
@@ -162,6 +163,17 @@ TEST(OpenApi, TuneSchemasAgreeWithTheCodec) {
     const json response = softtune::app::run_tune(request);
     EXPECT_EQ(conformance_error("/api/v1/tune", "post", 200, "application/json", response), "") << request.dump();
   }
+}
+
+// The page reads the designer's oscillation words from here (web/state.js), so they must be core's.
+TEST(OpenApi, OscillationWordsMapToCoresDampingRatios) {
+  const json& words = openapi_document()["components"]["schemas"]["TuneRequest"]["properties"]["oscillation"];
+  const json& zeta = words["x-damping-ratio"];
+  ASSERT_EQ(zeta.size(), 3u);
+  EXPECT_EQ(words["enum"], json({"free", "some", "none"}));
+  EXPECT_EQ(zeta["free"].get<double>(), softtune::damping_ratio_of(softtune::Oscillation::free));
+  EXPECT_EQ(zeta["some"].get<double>(), softtune::damping_ratio_of(softtune::Oscillation::some));
+  EXPECT_EQ(zeta["none"].get<double>(), softtune::damping_ratio_of(softtune::Oscillation::none));
 }
 
 TEST(OpenApi, TuneRequestSchemaRefusesWhatTheCodecRefuses) {
