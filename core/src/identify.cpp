@@ -253,6 +253,10 @@ MotionFit fit_motion(const Series& x, double h) {
   for (std::size_t k = 0; k < x.size(); ++k) {
     const double c0 = fit.coefficients(0, static_cast<Eigen::Index>(k));
     out.equilibrium.push_back(mean[k] + scale[k] * c0);
+    std::vector<double> fitted(static_cast<std::size_t>(n));
+    const Eigen::VectorXd model = fit.basis * fit.coefficients.col(static_cast<Eigen::Index>(k));
+    for (int i = 0; i < n; ++i) fitted[i] = mean[k] + scale[k] * model(i);
+    out.fitted.push_back(std::move(fitted));
     motion += (y.col(static_cast<Eigen::Index>(k)).array() - c0).square().sum();
   }
   out.residual = motion > 0.0 ? std::sqrt(fit.cost / motion) : 0.0;
@@ -298,6 +302,9 @@ std::optional<RecordingError> validate_recording(const Recording& r) {
   if (r.time_s.size() > kIdentifyMaxSamples) return RecordingError{kIdentifyMaxSamples, 0, "must have at most 100000 rows"};
   if (r.probes.empty()) return RecordingError{0, 1, "must have at least one probe column beside time"};
   if (r.probes.size() > kIdentifyMaxProbes) return RecordingError{0, kIdentifyMaxProbes + 1, "must have at most 16 probe columns"};
+  if (r.time_s.size() * r.probes.size() > kIdentifyMaxCells) {
+    return RecordingError{kIdentifyMaxCells / r.probes.size(), 0, "must hold at most 400000 values (rows x probes)"};
+  }
   for (std::size_t k = 0; k < r.probes.size(); ++k) {
     if (r.probes[k].size() != r.time_s.size()) {
       return RecordingError{std::min(r.probes[k].size(), r.time_s.size()), k + 1, "must be as long as the time column"};

@@ -36,6 +36,7 @@ namespace softtune {
 /// Bounds of a recording (checked by validate_recording before any work; docs/identify.md lists them).
 inline constexpr std::size_t kIdentifyMaxSamples = 100'000;  ///< rows
 inline constexpr std::size_t kIdentifyMaxProbes = 16;        ///< probe columns beside the time column
+inline constexpr std::size_t kIdentifyMaxCells = 400'000;    ///< rows x probe columns
 inline constexpr std::size_t kIdentifyMinSamples = 16;       ///< fewer moving samples: too_short
 /// A timestamp further than this many sample intervals from the least-squares uniform grid makes the
 /// sampling non-uniform (resampled). Jitter below it is timing noise and is averaged out.
@@ -77,7 +78,7 @@ struct RecordingError {
 };
 
 /// The first rule the recording breaks, or nothing: at least two rows and one probe, at most
-/// kIdentifyMaxSamples rows and kIdentifyMaxProbes probes, every column as long as the time column, every
+/// kIdentifyMaxSamples rows, kIdentifyMaxProbes probes and kIdentifyMaxCells values, every column as long as the time column, every
 /// value finite, time strictly increasing.
 std::optional<RecordingError> validate_recording(const Recording& recording);
 
@@ -90,6 +91,8 @@ struct MotionFit {
   std::optional<double> residual;  ///< output error: RMS(x - fit) / RMS(x - x_e) over the window; 0 exact
   std::vector<double> equilibrium;  ///< per probe fitted, x_e (the value it decays to), in the probe's unit
   int samples_used = 0;             ///< samples per probe in the fit window
+  /// Per probe, the fitted motion x_e + a u[n] + w_b w[n] at each fit interval over the window (for plots).
+  std::vector<std::vector<double>> fitted;
   std::vector<IdentifyVerdict> verdicts;
 };
 
