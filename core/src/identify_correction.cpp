@@ -6,13 +6,8 @@
 namespace softtune {
 namespace {
 
-// zeta_typed zeta_asked / zeta_measured, or the difference added when either ratio is too small to scale.
-double scaled_damping(double typed, double asked, double measured) {
-  if (measured > kCorrectionMinDamping && typed > kCorrectionMinDamping && asked > kCorrectionMinDamping) {
-    return typed * asked / measured;
-  }
-  return std::max(0.0, typed + asked - measured);
-}
+// zeta_typed + zeta_asked - zeta_measured: a step's numerical damping adds to the ratio.
+double scaled_damping(double typed, double asked, double measured) { return std::max(0.0, typed + asked - measured); }
 
 bool trusted(double slope) { return std::isfinite(slope) && slope >= 1.0 / kCorrectionMaxSlope && slope <= kCorrectionMaxSlope; }
 
