@@ -11,6 +11,9 @@
 
 #include "app/accuracy_app.h"
 #include "app/verify_app.h"
+#include "app/identify_app.h"
+#include "codec/identify_codec.h"
+#include "softtune/identify.h"
 #include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
 #include "codec/problem.h"
@@ -118,7 +121,12 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["stability_max_grid_entries"], softtune::codec::kMaxGridEntries);
   EXPECT_EQ(x["stability_max_cases"], softtune::codec::kMaxCases);
   EXPECT_EQ(x["stability_max_observe_steps"], softtune::codec::kMaxObserveSteps);
-  EXPECT_EQ(x.size(), 30u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x["identify_max_samples"], softtune::kIdentifyMaxSamples);
+  EXPECT_EQ(x["identify_max_probes"], softtune::kIdentifyMaxProbes);
+  EXPECT_EQ(x["identify_max_values"], softtune::kIdentifyMaxCells);
+  EXPECT_EQ(x["identify_max_csv_bytes"], softtune::codec::kCsvMaxBytes);
+  EXPECT_EQ(x["identify_max_previous"], softtune::codec::kIdentifyMaxPrevious);
+  EXPECT_EQ(x.size(), 35u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {
@@ -183,6 +191,7 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
       {"/api/v1/accuracy", [](const json& q) { return softtune::app::run_accuracy(q); }},
       {"/api/v1/stability", [](const json& q) { return softtune::app::run_stability(q); }},
       {"/api/v1/verify", [](const json& q) { return softtune::app::run_verify(q); }},
+      {"/api/v1/identify", [](const json& q) { return softtune::app::run_identify(q); }},
   };
   for (const auto& [path, contract] : contracts) {
     const json& body = openapi_document()["paths"][path]["post"]["requestBody"]["content"]["application/json"];
