@@ -8,6 +8,7 @@ import { responseSeries } from './oscillator.js';
 import { drawError, drawResponse, drawSimulation, drawWorkPrecision, showUnavailable } from './plots.js';
 import { PreviewPlayer } from './preview.js';
 import { showEngines, watchEngineValues } from './engine_table.js';
+import { identifyOverlay, installIdentify, showIdentified } from './identify.js';
 import { copyText, fmt, formatPercent, showNumbers, showStability } from './results.js';
 import {
   OSCILLATION_ZETA, fromQuery, readForm, stateFromScene, toQuery, tuneRequest, tunedScene, tuningFields,
@@ -154,8 +155,9 @@ async function runTune() {
   showNumbers(results, tune);
   showStability(results, tune, Number(state.fps), Number(state.substeps));
   showEngines(results, tune);
+  showIdentified(results);
   const series = responseSeries(tune);
-  drawResponse($('plot-response'), series);
+  drawResponse($('plot-response'), series, identifyOverlay());
   $('response-note').textContent = sameCurve(series.methods.soft, series.methods.implicit_euler)
     ? 'The soft constraint and implicit Euler draw one curve: they are the same integrator (Catto, GDC 2011).' : '';
   drawError($('plot-error'), series);
@@ -388,5 +390,7 @@ writeForm(form, fromQuery(location.search, DEFAULTS));
 syncControls();
 busy(0);
 await loadRoutes();
+installIdentify(form, { request: () => tuneRequest(readForm(form)), engines: () => Object.keys(window.softtune?.tune?.engines ?? {}),
+  redraw: () => scheduleTune() });
 runTune();
 loadPresetList();

@@ -56,12 +56,14 @@ function methodSeries(names, extra = {}) {
 const fmtAxis = (digits) => (u, vals) => vals.map((v) => (v === null ? '' : Number(v.toPrecision(digits)).toString()));
 const logAxis = (u, vals) => vals.map((v) => (v === null ? '' : v.toExponential(0).replace('e+', 'e')));
 
-/// Response plot: time (s) against x for the exact motion (on its fine grid) and each method (at its steps).
-export function drawResponse(el, series) {
+/// Response plot: time (s) against x for the exact motion (on its fine grid) and each method (at its steps);
+/// `overlay` adds curves [{label, stroke, points: [[t, x]], dash?, markers?}] (a recording, web/identify.js).
+export function drawResponse(el, series, overlay = []) {
   resize.observe(el);
   const names = METHODS.filter((m) => series.methods[m]);
   const zip = (t, x) => t.map((ti, i) => [ti, x[i]]);
-  const data = aligned([zip(series.smooth.t, series.smooth.x), ...names.map((m) => zip(series.t, series.methods[m]))]);
+  const data = aligned([zip(series.smooth.t, series.smooth.x), ...names.map((m) => zip(series.t, series.methods[m])),
+    ...overlay.map((c) => c.points)]);
   draw(el, {
     scales: {
       x: { time: false },
@@ -72,7 +74,9 @@ export function drawResponse(el, series) {
     series: [{ label: 't (s)' },
       { label: 'exact', stroke: COLORS.exact, width: 2.5, dash: [6, 4], spanGaps: true, points: { show: false } },
       // Markers at each step while they are few enough to tell apart: they show where the method samples.
-      ...methodSeries(names, { spanGaps: true, points: { show: series.t.length <= 200 } })],
+      ...methodSeries(names, { spanGaps: true, points: { show: series.t.length <= 200 } }),
+      ...overlay.map((c) => ({ label: c.label, stroke: c.stroke, width: 1.5, dash: c.dash, spanGaps: true,
+        points: { show: Boolean(c.markers) && c.points.length <= 200 } }))],
   }, data);
 }
 
