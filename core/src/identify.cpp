@@ -112,61 +112,84 @@ bool clipped(const std::vector<double>& x) {
   return false;
 }
 
-// The variable-projection model at poles (p, q): columns 1, u, w over n samples.
+// The variable-projection model at poles (p, q): columns 1, u, w over n samples, orthonormalised by
+// modified Gram-Schmidt run twice ("twice is enough": orthogonal to round-off), so the projections below
+// are exact to round-off and cost a few passes over the samples. Buffers are reused between calls.
 struct Projection {
-  Eigen::MatrixXd basis;                              // n x 3
-  Eigen::HouseholderQR<Eigen::MatrixXd> qr;
-  Eigen::MatrixXd coefficients;                       // 3 x probes
-  Eigen::MatrixXd residual;                           // n x probes
-  double cost = 0.0;                                  // sum of squared residuals (normalised units)
+  Eigen::MatrixXd basis;         // n x 3: 1, u, w
+  Eigen::MatrixXd q;             // n x 3, orthonormal, basis = q r
+  Eigen::Matrix3d r;
+  Eigen::MatrixXd coefficients;  // 3 x probes, in the basis (1, u, w)
+  Eigen::MatrixXd residual;      // n x probes
+  double cost = 0.0;             // sum of squared residuals (normalised units)
   bool ok = false;
 };
 
-Projection project(double p, double q, const Eigen::MatrixXd& y) {
-  Projection out;
+void project(double p, double q, const Eigen::MatrixXd& y, Projection& out) {
+  out.ok = false;
   const Eigen::Index n = y.rows();
   out.basis.resize(n, 3);
-  out.basis.col(0).setOnes();
-  out.basis(0, 1) = 1.0, out.basis(1, 1) = 0.0;
-  out.basis(0, 2) = 0.0, out.basis(1, 2) = 1.0;
+  out.q.resize(n, 3);
+  double* one = out.basis.col(0).data();
+  double* u = out.basis.col(1).data();
+  double* w = out.basis.col(2).data();
+  one[0] = one[1] = 1.0;
+  u[0] = 1.0, u[1] = 0.0;
+  w[0] = 0.0, w[1] = 1.0;
   for (Eigen::Index i = 2; i < n; ++i) {
-    out.basis(i, 1) = p * out.basis(i - 1, 1) + q * out.basis(i - 2, 1);
-    out.basis(i, 2) = p * out.basis(i - 1, 2) + q * out.basis(i - 2, 2);
+    one[i] = 1.0;
+    u[i] = p * u[i - 1] + q * u[i - 2];
+    w[i] = p * w[i - 1] + q * w[i - 2];
   }
-  if (!out.basis.allFinite() || out.basis.cwiseAbs().maxCoeff() > 1e150) return out;
-  out.qr.compute(out.basis);
-  const Eigen::VectorXd d = out.qr.matrixQR().diagonal().cwiseAbs();
-  if (!(d.minCoeff() > 1e-12 * d.maxCoeff())) return out;
-  out.coefficients = out.qr.solve(y);
-  out.residual = y - out.basis * out.coefficients;
+  if (!out.basis.allFinite() || out.basis.cwiseAbs().maxCoeff() > 1e150) return;
+  out.r.setZero();
+  for (int j = 0; j < 3; ++j) {
+    out.q.col(j) = out.basis.col(j);
+    for (int pass = 0; pass < 2; ++pass) {
+      for (int i = 0; i < j; ++i) {
+        const double d = out.q.col(i).dot(out.q.col(j));
+        out.r(i, j) += d;
+        out.q.col(j) -= d * out.q.col(i);
+      }
+    }
+    out.r(j, j) = out.q.col(j).norm();
+    if (!(out.r(j, j) > 1e-12 * out.basis.col(j).norm())) return;  // (numerically) dependent columns
+    out.q.col(j) /= out.r(j, j);
+  }
+  const Eigen::MatrixXd qty = out.q.transpose() * y;
+  out.coefficients = out.r.triangularView<Eigen::Upper>().solve(qty);
+  out.residual = y - out.q * qty;
   out.cost = out.residual.squaredNorm();
   out.ok = std::isfinite(out.cost);
-  return out;
 }
 
 // Levenberg-Marquardt on (p, q) with Kaufman's variable-projection Jacobian J = -(I - P) dPhi/dtheta c: for
 // each probe, g_p[n+2] = p g_p[n+1] + q g_p[n] + h[n+1] and g_q[n+2] = p g_q[n+1] + q g_q[n] + h[n], where
 // h = a u + w_b w is the probe's homogeneous motion (differentiate u[n+2] = p u[n+1] + q u[n]).
+// Stops when a step gains less than kIdentifyStopGain of the cost, or after kIdentifyMaxIterations.
 Projection refine(double& p, double& q, const Eigen::MatrixXd& y) {
-  Projection best = project(p, q, y);
+  Projection best, trial;
+  project(p, q, y, best);
   if (!best.ok) return best;
   double lambda = 1e-3;
   const Eigen::Index n = y.rows();
   Eigen::MatrixXd g(n, 2);
+  Eigen::VectorXd h(n);
   for (int iter = 0; iter < kIdentifyMaxIterations; ++iter) {
     Eigen::Matrix2d jtj = Eigen::Matrix2d::Zero();
     Eigen::Vector2d jtr = Eigen::Vector2d::Zero();
     for (Eigen::Index k = 0; k < y.cols(); ++k) {
-      const Eigen::VectorXd h = best.basis.rightCols<2>() * best.coefficients.col(k).tail<2>();
+      h.noalias() = best.basis.rightCols<2>() * best.coefficients.col(k).tail<2>();
       g.row(0).setZero();
       g.row(1).setZero();
       for (Eigen::Index i = 2; i < n; ++i) {
         g(i, 0) = p * g(i - 1, 0) + q * g(i - 2, 0) + h(i - 1);
         g(i, 1) = p * g(i - 1, 1) + q * g(i - 2, 1) + h(i - 2);
       }
-      const Eigen::MatrixXd j = -(g - best.basis * best.qr.solve(g));
-      jtj += j.transpose() * j;
-      jtr += j.transpose() * best.residual.col(k);
+      const Eigen::Matrix<double, 3, 2> qtg = best.q.transpose() * g;
+      g -= best.q * qtg;  // (I - P) dPhi/dtheta c; J is its negative
+      jtj += g.transpose() * g;
+      jtr -= g.transpose() * best.residual.col(k);
     }
     bool improved = false;
     while (lambda < 1e12) {
@@ -174,14 +197,14 @@ Projection refine(double& p, double& q, const Eigen::MatrixXd& y) {
       a.diagonal() += lambda * jtj.diagonal().cwiseMax(1e-300);
       const Eigen::Vector2d step = a.ldlt().solve(-jtr);
       if (!step.allFinite()) break;
-      Projection trial = project(p + step(0), q + step(1), y);
+      project(p + step(0), q + step(1), y, trial);
       if (trial.ok && trial.cost < best.cost) {
         const double gain = (best.cost - trial.cost) / std::max(best.cost, 1e-300);
         p += step(0);
         q += step(1);
-        best = std::move(trial);
+        std::swap(best, trial);
         lambda = std::max(lambda / 3.0, 1e-12);
-        improved = gain > 1e-13;
+        improved = gain > kIdentifyStopGain;
         break;
       }
       lambda *= 4.0;
@@ -229,6 +252,14 @@ MotionFit fit_motion(const Series& x, double h) {
     return out;
   }
   double p = init->first, q = init->second;
+  // On a long record the cost is a narrow valley in (p, q) (the phase error grows with every sample), so
+  // the poles are refined on growing leading windows first, each starting from the last: a few cheap
+  // iterations on 256 samples take a biased Prony start most of the way.
+  for (Eigen::Index m = kIdentifyWarmWindow; m < n / 2; m *= 4) {
+    double pm = p, qm = q;
+    const Eigen::MatrixXd head = y.topRows(m);
+    if (refine(pm, qm, head).ok) p = pm, q = qm;
+  }
   const Projection fit = refine(p, q, y);
   if (!fit.ok) {
     add_verdict(out.verdicts, IdentifyVerdict::not_oscillating);

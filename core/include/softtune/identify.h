@@ -49,8 +49,12 @@ inline constexpr double kIdentifyMinCycles = 0.5;
 /// This many equal consecutive samples at a probe's largest or smallest value, before its settled tail, is
 /// clipped (a joint limit, a saturated sensor, a position clamp).
 inline constexpr int kIdentifyClipRun = 3;
-/// Levenberg-Marquardt iterations of the output-error refinement.
+/// Levenberg-Marquardt iterations of the output-error refinement, and the relative cost gain below which
+/// a step ends it.
 inline constexpr int kIdentifyMaxIterations = 60;
+inline constexpr double kIdentifyStopGain = 1e-10;
+/// The first leading window the refinement of a long record starts on (samples; it grows by 4 each time).
+inline constexpr long kIdentifyWarmWindow = 256;
 
 /// What may be wrong with a recording, as data; an empty list means the fit can be trusted.
 enum class IdentifyVerdict {
