@@ -8,6 +8,7 @@ import { ApiError } from './api.js';
 const MAX_CSV_BYTES = 1 << 20;  // the service's body limit (server/http/limits.h kMaxBodyBytes)
 
 let shown = null;  // { answer, engine, file } of the last recording identified
+let fillEngines = () => {};  // refreshes the engine choice from the latest tune answer
 
 /// The query of a text/csv identify request: the tune request's scalar fields, and the engine.
 export function identifyQuery(request, engine) {
@@ -62,8 +63,10 @@ export function identifyOverlay() {
   return shown ? overlayCurves(shown.answer) : [];
 }
 
-/// Adds the identified row to the engine table (#engines), which each tune answer redraws.
+/// Adds the identified row to the engine table (#engines), which each tune answer redraws, and offers that
+/// answer's engines for the next recording.
 export function showIdentified(root) {
+  fillEngines();
   const body = root.querySelector('#engines tbody');
   if (!body || !shown) return;
   body.querySelector('[data-testid="identify-row"]')?.remove();
@@ -106,10 +109,12 @@ export function installIdentify(panel, { request, engines, redraw }) {
   box.append(label, input, note, error);
   panel.append(box);
 
-  const fillEngines = () => {
+  fillEngines = () => {
     const keep = select.value;
-    select.replaceChildren(new Option('another engine', ''), ...engines().map((e) => new Option(e, e)));
-    select.value = keep;
+    const names = engines();
+    if (names.join() === [...select.options].slice(1).map((o) => o.value).join()) return;
+    select.replaceChildren(new Option('another engine', ''), ...names.map((e) => new Option(e, e)));
+    select.value = names.includes(keep) ? keep : '';
   };
   select.addEventListener('focus', fillEngines);
   fillEngines();

@@ -62,8 +62,9 @@ export function drawResponse(el, series, overlay = []) {
   resize.observe(el);
   const names = METHODS.filter((m) => series.methods[m]);
   const zip = (t, x) => t.map((ti, i) => [ti, x[i]]);
+  const end = series.t[series.t.length - 1];  // an overlay is cut to the plot's own time span
   const data = aligned([zip(series.smooth.t, series.smooth.x), ...names.map((m) => zip(series.t, series.methods[m])),
-    ...overlay.map((c) => c.points)]);
+    ...overlay.map((c) => c.points.filter(([t]) => t <= end))]);
   draw(el, {
     scales: {
       x: { time: false },
