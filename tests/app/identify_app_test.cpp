@@ -96,5 +96,26 @@ TEST(IdentifyApp, CsvQueryBecomesTheRequest) {
   EXPECT_EQ(doc["typed"]["frequency_hz"], 6.0);
 }
 
+// Mutated recordings (bytes flipped, rows cut, values made huge): each is an answer without NaN or a 4xx,
+// never a crash or another exception.
+TEST(IdentifyApp, MutatedCsvIsAnAnswerOrAProblem) {
+  const std::string good = oscillator_csv(3.0, 0.2, 120);
+  const char noise[] = {',', '\n', '-', 'e', '9', '.', 'x', '\0', ';', '\t'};
+  unsigned state = 19;
+  auto next = [&] { return state = state * 1103515245u + 12345u; };
+  for (int i = 0; i < 200; ++i) {
+    std::string csv = good;
+    for (int k = 0; k < 1 + i % 5; ++k) csv[next() % csv.size()] = noise[next() % sizeof(noise)];
+    if (i % 7 == 0) csv.resize(next() % csv.size());
+    try {
+      const json answer = run_identify({{"csv", csv}});
+      EXPECT_EQ(answer.dump().find("NaN"), std::string::npos);
+    } catch (const codec::Problem& p) {
+      EXPECT_GE(p.status, 400);
+      EXPECT_LT(p.status, 500);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace softtune::app
