@@ -1,6 +1,6 @@
 # Runs `softtune identify` as a user would: a CSV recording of a known oscillator (4.3 Hz, zeta 0.61, written
 # by the closed form), against the request it was tuned for, from a file and from stdin; and a bad row.
-# Usage: cmake -DSOFTTUNE=path/to/softtune -DDATA=tests/cli/data -P identify_cli_test.cmake
+# Usage: cmake -DSOFTTUNE=path/to/softtune -DDATA=tests/cli/data -P cmd_identify_test.cmake
 function(expect_run expected_code)
   execute_process(COMMAND ${SOFTTUNE} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT code EQUAL expected_code)
