@@ -87,15 +87,6 @@ TEST(IdentifyApp, BadSeriesNameRowAndColumn) {
   EXPECT_EQ(problem_field({{"time_s", {0, 0.1}}, {"probes", {{"x", {1, 2}}}}, {"bogus", 1}}).substr(0, 9), "422 bogus");
 }
 
-TEST(IdentifyApp, CsvQueryBecomesTheRequest) {
-  const json doc = codec::identify_request_from_csv("t,x\n", {{"engine", "unity"}, {"frequency_hz", "5"}, {"oscillation", "some"},
-                                                              {"typed_frequency_hz", "6"}});
-  EXPECT_EQ(doc["engine"], "unity");
-  EXPECT_EQ(doc["request"]["frequency_hz"], 5.0);
-  EXPECT_EQ(doc["request"]["oscillation"], "some");
-  EXPECT_EQ(doc["typed"]["frequency_hz"], 6.0);
-}
-
 // Mutated recordings (bytes flipped, rows cut, values made huge): each is an answer without NaN or a 4xx,
 // never a crash or another exception.
 TEST(IdentifyApp, MutatedCsvIsAnAnswerOrAProblem) {
