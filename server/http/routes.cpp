@@ -6,6 +6,7 @@
 #include "codec/tune_codec.h"
 #include "http/capability_routes.h"
 #include "http/identify_routes.h"
+#include "http/check_routes.h"
 #include "http/openapi.h"
 #include "http/preview_routes.h"
 #include "http/static_files.h"
@@ -82,6 +83,7 @@ std::vector<Route> service_routes() {
       {"GET", "/api/v1/health", health},
       {"POST", "/api/v1/tune", json_contract(app::run_tune, "tune")},
       {"POST", "/api/v1/simulate", simulate},
+      {"POST", "/api/v1/check", check},
       {"POST", "/api/v1/verify", json_contract(app::run_verify, "")},
       {"POST", std::string(kIdentifyPath), identify},
       {"GET", "/api/v1/presets", presets},

@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "app/accuracy_app.h"
+#include "app/check_cost.h"
+#include "app/check_request.h"
 #include "app/verify_app.h"
 #include "app/identify_app.h"
 #include "codec/identify_codec.h"
@@ -133,7 +135,11 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["identify_max_values"], softtune::kIdentifyMaxCells);
   EXPECT_EQ(x["identify_max_csv_bytes"], softtune::codec::kCsvMaxBytes);
   EXPECT_EQ(x["identify_max_previous"], softtune::codec::kIdentifyMaxPrevious);
-  EXPECT_EQ(x.size(), 35u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x["check_max_work"], softtune::app::kMaxCheckWork);
+  EXPECT_EQ(x["check_max_presets"], softtune::app::kMaxCheckPresets);
+  EXPECT_EQ(x["check_max_scenes"], softtune::app::kMaxCheckScenes);
+  EXPECT_EQ(x["check_max_rates"], softtune::scene::limits::kMaxRates);
+  EXPECT_EQ(x.size(), 39u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {
@@ -199,6 +205,7 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
       {"/api/v1/stability", [](const json& q) { return softtune::app::run_stability(q); }},
       {"/api/v1/verify", [](const json& q) { return softtune::app::run_verify(q); }},
       {"/api/v1/identify", [](const json& q) { return softtune::app::run_identify(q); }},
+      {"/api/v1/check", [&](const json& q) { return softtune::app::run_check_request(q, presets).json; }},
   };
   for (const auto& [path, contract] : contracts) {
     const json& body = openapi_document()["paths"][path]["post"]["requestBody"]["content"]["application/json"];
