@@ -19,6 +19,7 @@ import { showEngines, watchEngineValues } from './engine_table.js';
 import { chainField, showChain } from './chain.js';
 import { copyText, fmt, showNumbers, showStability, showSummary } from './results.js';
 import { probeUnit, showJoints, showProbes, tunedJoints } from './simulate_panel.js';
+import { identifyOverlay, installIdentify, showIdentified } from './identify.js';
 import {
   fromQuery, presetRequest, previewRequest, readForm, stateFromScene, toQuery, tuneRequest, tuningFields, writeForm,
 } from './state.js';
@@ -254,9 +255,10 @@ async function runTune() {
   showStability(results, tune, Number(state.fps), Number(state.substeps));
   showEngines(results, tune);
   showChain(document, tune);
+  showIdentified(results);
   const series = responseSeries(tune);
   lastSeries = series;
-  drawResponse($('plot-response'), series, chosenMethod(tune), comparison.pinned?.series);
+  drawResponse($('plot-response'), series, chosenMethod(tune), comparison.pinned?.series, identifyOverlay());
   $('response-note').textContent = sameCurve(series.methods.soft, series.methods.implicit_euler)
     ? 'The soft constraint and implicit Euler draw one curve: they are the same integrator (Catto, GDC 2011).' : '';
   drawError($('plot-error'), series);
@@ -540,6 +542,8 @@ await loadRoutes();
 words = oscillationWords();
 writeForm(form, fromQuery(location.search, DEFAULTS, words));
 syncControls();
+installIdentify(form, { request: () => tuneRequest(readForm(form)), engines: () => Object.keys(window.softtune?.tune?.engines ?? {}),
+  redraw: () => scheduleTune() });
 const listNote = await tracked(fillPresetList($('preset')));
 if (listNote) {
   $('preset-note').textContent = listNote;

@@ -118,13 +118,16 @@ const logAxis = (u, vals) => vals.map((v) => (v === null ? '' : v.toExponential(
 
 /// Response plot: time (s) against x for the exact motion (on its fine grid) and each method (at its steps).
 /// `chosen` (the mode's soft method) is drawn thick, the others thin, so the one the designer gets stands
-/// out; `pinned` (A of an A/B comparison: {t, x}) is A's chosen method, drawn grey and dashed.
-export function drawResponse(el, series, chosen, pinned) {
+/// out; `pinned` (A of an A/B comparison: {t, x}) is A's chosen method, drawn grey and dashed; `overlay`
+/// adds curves [{label, stroke, points: [[t, x]], dash?, markers?}] (a recording, web/identify.js).
+export function drawResponse(el, series, chosen, pinned, overlay = []) {
   resize.observe(el);
   const names = METHODS.filter((m) => series.methods[m]);
   const zip = (t, x) => t.map((ti, i) => [ti, x[i]]);
   const curves = [zip(series.smooth.t, series.smooth.x), ...names.map((m) => zip(series.t, series.methods[m]))];
   if (pinned) curves.push(zip(pinned.t, pinned.x));
+  const end = series.t[series.t.length - 1];  // an overlay is cut to the plot's own time span
+  curves.push(...overlay.map((c) => c.points.filter(([t]) => t <= end)));
   draw(el, {
     scales: {
       x: { time: false },
@@ -137,7 +140,9 @@ export function drawResponse(el, series, chosen, pinned) {
       // Markers at each step while they are few enough to tell apart: they show where the method samples.
       ...names.map((m) => ({ label: m === chosen ? `${METHOD_LABELS[m]} (chosen)` : METHOD_LABELS[m], stroke: COLORS[m],
         width: m === chosen ? 3.5 : 1.2, spanGaps: true, points: { show: series.t.length <= 200 && m === chosen } })),
-      ...(pinned ? [{ label: `A: ${pinned.label}`, stroke: '#8c959f', width: 2.5, dash: [3, 3], spanGaps: true, points: { show: false } }] : [])],
+      ...(pinned ? [{ label: `A: ${pinned.label}`, stroke: '#8c959f', width: 2.5, dash: [3, 3], spanGaps: true, points: { show: false } }] : []),
+      ...overlay.map((c) => ({ label: c.label, stroke: c.stroke, width: 1.5, dash: c.dash, spanGaps: true,
+        points: { show: Boolean(c.markers) && c.points.length <= 200 } }))],
   }, aligned(curves));
 }
 

@@ -11,9 +11,10 @@ namespace {
 
 constexpr int kMinSamples = 8;
 
-// The number of leading samples worth fitting: up to the last one still above kFitFloor of the largest
-// distance from the final value (plus two, so the recurrence sees the tail start).
+}  // namespace
+
 int fit_window(const std::vector<double>& x) {
+  if (x.empty()) return 0;
   const double last = x.back();
   double largest = 0.0;
   for (double v : x) largest = std::max(largest, std::abs(v - last));
@@ -23,8 +24,6 @@ int fit_window(const std::vector<double>& x) {
   }
   return std::min(static_cast<int>(x.size()), end + 3);
 }
-
-}  // namespace
 
 std::optional<double> overshoot_of(const std::vector<double>& x, double equilibrium) {
   if (x.empty()) return std::nullopt;
@@ -87,6 +86,8 @@ ResponseFit fit_response(const std::vector<double>& x, double h) {
         companion << p(0), p(1), 1.0, 0.0;
         std::complex<double> z1, z2;
         eigenvalues_2x2(companion, z1, z2);
+        out.z1 = z1;
+        out.z2 = z2;
         double f = 0.0, zeta = 0.0;
         if (achieved_from_poles(z1, z2, h, f, zeta)) {
           out.frequency_hz = f;

@@ -16,5 +16,6 @@ int run_simulate(const Args& args);
 int run_check(const Args& args);
 int run_render(const Args& args);
 int run_verify(const Args& args);
+int run_identify(const Args& args);
 
 }  // namespace softtune::cli

@@ -21,6 +21,7 @@ constexpr Command kCommands[] = {
     {"check", "run every preset's expectations (the automated preset test)", softtune::cli::run_check},
     {"render", "preview frames of a preset -> DIR/frame_0000.png ... and filmstrip.png", softtune::cli::run_render},
     {"verify", "run a tuning in the real engines linked in process: measured against predicted", softtune::cli::run_verify},
+    {"identify", "a recorded trajectory (CSV) -> frequency, damping, verdicts, and what to type instead", softtune::cli::run_identify},
 };
 
 int usage(std::ostream& out, int code) {

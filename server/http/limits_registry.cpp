@@ -8,6 +8,7 @@
 #include "app/check_request.h"
 #include "app/preset_store.h"
 #include "app/preview_service.h"
+#include "codec/identify_codec.h"
 #include "codec/json_reader.h"
 #include "codec/scene_codec.h"
 #include "codec/stability_codec.h"
@@ -16,6 +17,7 @@
 #include "softtune/accuracy.h"
 #include "softtune/chain_design.h"
 #include "softtune/engines/verify.h"
+#include "softtune/identify.h"
 #include "softtune/render/frame_pipeline.h"
 #include "softtune/render/renderer.h"
 #include "softtune/scene/limits.h"
@@ -86,6 +88,11 @@ std::vector<NumericLimit> numeric_limits() {
       {"max_preview_frames", D(render::caps::kMaxFrames)},
       {"max_preview_width", D(render::caps::kMaxWidth)},
       {"max_preview_height", D(render::caps::kMaxHeight)},
+      {"identify_max_samples", D(kIdentifyMaxSamples)},
+      {"identify_max_probes", D(kIdentifyMaxProbes)},
+      {"identify_max_values", D(kIdentifyMaxCells)},
+      {"identify_max_csv_bytes", D(codec::kCsvMaxBytes)},
+      {"identify_max_previous", D(codec::kIdentifyMaxPrevious)},
       {"check_max_work", app::kMaxCheckWork},
       {"check_max_presets", D(app::kMaxCheckPresets)},
       {"check_max_scenes", D(app::kMaxCheckScenes)},
@@ -220,6 +227,17 @@ std::vector<LimitRow> request_rows() {
        "`kVerifyMaxDuration`, `kVerifyMaxSteps`; x0 in `server/codec/verify_codec.cpp`",
        "422 naming the field; each trajectory in the answer is strided to at most " +
            figure(codec::kVerifyMaxPlotSamples) + " samples (`kVerifyMaxPlotSamples`)"},
+      {"identify request",
+       "2 to " + figure(kIdentifyMaxSamples) + " rows, 1 to " + figure(kIdentifyMaxProbes) + " probe columns, at most " +
+           figure(kIdentifyMaxCells) + " values; CSV at most " + bytes(codec::kCsvMaxBytes) + ", column names of 1 to " +
+           figure(codec::kCsvMaxNameBytes) + " bytes; at most " + figure(codec::kIdentifyMaxPrevious) +
+           " `previous` rounds; `engine` 1 to " + figure(codec::kIdentifyMaxEngineName) + " of `A-Za-z0-9_.-`",
+       "`core/include/softtune/identify.h` `kIdentifyMaxSamples`, `kIdentifyMaxProbes`, `kIdentifyMaxCells`; "
+       "`server/codec/csv_recording.h` `kCsvMaxBytes`, `kCsvMaxNameBytes`; `server/codec/identify_codec.h` "
+       "`kIdentifyMaxPrevious`, `kIdentifyMaxEngineName`",
+       "422 naming the row and column (`csv.rows[i].x`, `probes.x[i]`); the fit runs at most " +
+           figure(kIdentifyMaxIterations) + " Levenberg-Marquardt steps per window; `plot` strided to at most " +
+           figure(codec::kIdentifyMaxPlotSamples) + " samples per probe"},
   };
 }
 

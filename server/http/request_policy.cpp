@@ -3,6 +3,7 @@
 #include <charconv>
 #include <string>
 
+#include "http/identify_routes.h"
 #include "http/limits.h"
 
 namespace softtune::http {
@@ -44,6 +45,8 @@ std::optional<codec::Problem> check_request_head(const HttpRequest& head) {
     return std::nullopt;
   }
   const std::string type = head.header("Content-Type").value_or("");
+  // POST /api/v1/identify also takes a recording as CSV text (identify_routes.h).
+  if (head.path == kIdentifyPath && is_csv_media_type(type)) return std::nullopt;
   if (!is_json_media_type(type)) {
     return codec::Problem(415, "Unsupported media type", "Content-Type",
                           "request bodies must be application/json, got \"" + type + "\"");

@@ -20,7 +20,7 @@ inline constexpr const char* kPolicyHeaders[] = {"Transfer-Encoding", "Content-E
 ///   Content-Length not a decimal number  -> 400
 ///   Content-Length > limits::kMaxBodyBytes -> 413
 ///   GET/HEAD/DELETE/OPTIONS with a body   -> 400
-///   a body whose Content-Type is not application/json -> 415
+///   a body whose Content-Type is not application/json -> 415 (POST /api/v1/identify also takes text/csv)
 std::optional<codec::Problem> check_request_head(const HttpRequest& head);
 
 }  // namespace softtune::http

@@ -5,6 +5,7 @@
 #include "app/tune_app.h"
 #include "codec/tune_codec.h"
 #include "http/capability_routes.h"
+#include "http/identify_routes.h"
 #include "http/check_routes.h"
 #include "http/openapi.h"
 #include "http/preview_routes.h"
@@ -84,6 +85,7 @@ std::vector<Route> service_routes() {
       {"POST", "/api/v1/simulate", simulate},
       {"POST", "/api/v1/check", check},
       {"POST", "/api/v1/verify", json_contract(app::run_verify, "")},
+      {"POST", std::string(kIdentifyPath), identify},
       {"GET", "/api/v1/presets", presets},
       {"GET", "/api/v1/presets/{name}", preset},
       {"POST", "/api/v1/accuracy", accuracy},

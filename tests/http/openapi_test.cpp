@@ -13,6 +13,9 @@
 #include "app/check_cost.h"
 #include "app/check_request.h"
 #include "app/verify_app.h"
+#include "app/identify_app.h"
+#include "codec/identify_codec.h"
+#include "softtune/identify.h"
 #include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
 #include "codec/problem.h"
@@ -128,11 +131,16 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["stability_max_grid_entries"], softtune::codec::kMaxGridEntries);
   EXPECT_EQ(x["stability_max_cases"], softtune::codec::kMaxCases);
   EXPECT_EQ(x["stability_max_observe_steps"], softtune::codec::kMaxObserveSteps);
+  EXPECT_EQ(x["identify_max_samples"], softtune::kIdentifyMaxSamples);
+  EXPECT_EQ(x["identify_max_probes"], softtune::kIdentifyMaxProbes);
+  EXPECT_EQ(x["identify_max_values"], softtune::kIdentifyMaxCells);
+  EXPECT_EQ(x["identify_max_csv_bytes"], softtune::codec::kCsvMaxBytes);
+  EXPECT_EQ(x["identify_max_previous"], softtune::codec::kIdentifyMaxPrevious);
   EXPECT_EQ(x["check_max_work"], softtune::app::kMaxCheckWork);
   EXPECT_EQ(x["check_max_presets"], softtune::app::kMaxCheckPresets);
   EXPECT_EQ(x["check_max_scenes"], softtune::app::kMaxCheckScenes);
   EXPECT_EQ(x["check_max_rates"], softtune::scene::limits::kMaxRates);
-  EXPECT_EQ(x.size(), 34u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x.size(), 39u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {
@@ -208,6 +216,7 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
       {"/api/v1/accuracy", [](const json& q) { return softtune::app::run_accuracy(q); }},
       {"/api/v1/stability", [](const json& q) { return softtune::app::run_stability(q); }},
       {"/api/v1/verify", [](const json& q) { return softtune::app::run_verify(q); }},
+      {"/api/v1/identify", [](const json& q) { return softtune::app::run_identify(q); }},
       {"/api/v1/check", [&](const json& q) { return softtune::app::run_check_request(q, presets).json; }},
   };
   for (const auto& [path, contract] : contracts) {

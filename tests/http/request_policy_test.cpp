@@ -59,3 +59,22 @@ TEST(RequestPolicy, NeedsJsonBodiesAndBodilessGets) {
   EXPECT_EQ(verdict(head("POST", {{"Content-Type", "application/jsonx"}, {"Content-Length", "2"}})), "415 Content-Type");
   EXPECT_EQ(verdict(head("GET", {{"Content-Length", "5"}})), "400 Content-Length");
 }
+
+namespace softtune::http {
+namespace {
+
+// POST /api/v1/identify alone also takes a CSV body (identify_routes.h); every other route stays JSON-only.
+TEST(RequestPolicy, IdentifyAloneTakesCsv) {
+  HttpRequest r;
+  r.method = "POST";
+  r.path = "/api/v1/identify";
+  r.headers.emplace("Content-Type", "text/csv; charset=utf-8");
+  r.headers.emplace("Content-Length", "10");
+  EXPECT_FALSE(check_request_head(r));
+  r.path = "/api/v1/tune";
+  ASSERT_TRUE(check_request_head(r));
+  EXPECT_EQ(check_request_head(r)->status, 415);
+}
+
+}  // namespace
+}  // namespace softtune::http

@@ -147,7 +147,8 @@ TEST_F(BadInputMatrix, EveryDocumentedParameterRefusesHostileValuesNamingIt) {
                               "soft_substeps": [1], "timing_repeats": 1, "box2d": false})"},
       {"/api/v1/stability", R"({"methods": ["soft"], "frequency_ratios": [0.1], "stiffnesses": [100],
                                "damping_ratios": [0], "masses": [1], "steps": [0.01], "observe_steps": 1000,
-                               "chain": false})"}};
+                               "chain": false})"},
+      {"/api/v1/identify", R"({"time_s": [0, 0.1, 0.2], "probes": {"x": [1, 0.5, 0.2]}})"}};
   const std::vector<std::string> hostile = {"xml", "JSON", "json%00", "%00", "..%2f..%2fetc", "%ff%fe", "1e999", "-1",
                                             "NaN", "0x1", "+1", "%201", "99999999999999999999", std::string(4000, 'a')};
   std::size_t ran = 0;

@@ -12,6 +12,7 @@
 // log decrement it needs no peak picking, works for over-damped motion (two real poles) and is exact, not
 // approximate, for the discrete trajectory of a soft constraint (which *is* such a recurrence).
 
+#include <complex>
 #include <optional>
 #include <vector>
 
@@ -33,7 +34,12 @@ struct ResponseFit {
   std::optional<int> settle_samples;    ///< first sample after which it stays in the settle band; empty: never
   std::optional<double> residual;       ///< RMS fit residual / RMS deviation of the window (0 = exact)
   int samples_used = 0;                 ///< samples that entered the least-squares fit
+  std::optional<std::complex<double>> z1, z2;  ///< the fitted discrete poles per sample interval h
 };
+
+/// The number of leading samples worth fitting: up to the last one further than kFitFloor of the largest
+/// distance from the final value (plus two, so the recurrence sees the tail start).
+int fit_window(const std::vector<double>& samples);
 
 /// Fits `samples`, spaced `h` seconds apart (h > 0). Needs at least 8 samples and some motion; otherwise
 /// every field that cannot be computed is empty.

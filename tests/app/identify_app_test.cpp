@@ -1,0 +1,112 @@
+// The identify use case end to end on JSON and CSV requests: bad series are 422s naming the row and column,
+// and a recording of a known oscillator answers its frequency, damping ratio, the error against the request
+// and the correction (the modelled engine's exact, and the scaled values for any engine).
+#include "app/identify_app.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "codec/identify_codec.h"
+#include "codec/problem.h"
+#include "softtune/analytic.h"
+
+namespace softtune::app {
+namespace {
+
+using nlohmann::json;
+
+// The analytic oscillator at f Hz, ratio zeta, sampled at 60 Hz for `rows` rows, as CSV.
+std::string oscillator_csv(double f, double zeta, int rows) {
+  std::ostringstream out;
+  out.precision(12);
+  out << "time,x\n";
+  for (int n = 0; n < rows; ++n) {
+    out << n / 60.0 << "," << analytic_state({0.01, 0.0}, 2.0 * std::numbers::pi * f, zeta, n / 60.0).x << "\n";
+  }
+  return out.str();
+}
+
+std::string problem_field(const json& request) {
+  try {
+    run_identify(request);
+  } catch (const codec::Problem& p) {
+    return std::to_string(p.status) + " " + p.field + ": " + p.detail;
+  }
+  return "no problem";
+}
+
+TEST(IdentifyApp, CsvRecordingAgainstItsRequest) {
+  const json answer = run_identify({{"csv", oscillator_csv(4.3, 0.61, 240)},
+                                    {"request", {{"frequency_hz", 5}, {"damping_ratio", 0.5}, {"effective_mass", 2}}},
+                                    {"engine", "godot"}});
+  EXPECT_NEAR(answer["frequency_hz"].get<double>(), 4.3, 1e-6);
+  EXPECT_NEAR(answer["damping_ratio"].get<double>(), 0.61, 1e-6);
+  EXPECT_NEAR(answer["error"]["frequency"].get<double>(), 4.3 / 5 - 1, 1e-6);
+  EXPECT_EQ(answer["verdict"], "ok");
+  EXPECT_FALSE(answer["modelled"].get<bool>());
+  // Scaled: f' = 5 x 5 / 4.3; zeta' = 0.5 + 0.5 - 0.61; k = m (2 pi f')^2.
+  const json& next = answer["correction"]["next"];
+  EXPECT_NEAR(next["frequency_hz"].get<double>(), 25.0 / 4.3, 1e-5);
+  EXPECT_NEAR(next["damping_ratio"].get<double>(), 0.39, 1e-6);
+  EXPECT_NEAR(next["k"].get<double>(), 2.0 * std::pow(2 * std::numbers::pi * 25.0 / 4.3, 2), 1e-2);
+  EXPECT_TRUE(answer["exact"].is_null());
+}
+
+TEST(IdentifyApp, ModelledEngineAnswersItsExactAndTheCorrectedExport) {
+  const json answer = run_identify({{"csv", oscillator_csv(4.3, 0.65, 240)},
+                                    {"request", {{"frequency_hz", 5}, {"damping_ratio", 0.5}, {"effective_mass", 2}}},
+                                    {"engine", "box2d_v2_4"}});
+  EXPECT_TRUE(answer["modelled"].get<bool>());
+  EXPECT_TRUE(answer["exact"].contains("b2DistanceJointDef::stiffness"));
+  EXPECT_TRUE(answer["correction"]["parameters"].contains("b2DistanceJointDef::stiffness"));
+}
+
+TEST(IdentifyApp, SecondRecordingIteratesBySecant) {
+  const json answer = run_identify({{"csv", oscillator_csv(4.8, 0.52, 240)},
+                                    {"request", {{"frequency_hz", 5}, {"damping_ratio", 0.5}, {"effective_mass", 2}}},
+                                    {"typed", {{"frequency_hz", 5.6}, {"damping_ratio", 0.45}}},
+                                    {"previous", json::array({{{"measured", {{"frequency_hz", 4.3}, {"damping_ratio", 0.61}}},
+                                                               {"typed", {{"frequency_hz", 5}, {"damping_ratio", 0.5}}}}})}});
+  EXPECT_EQ(answer["correction"]["method"], "secant");
+  EXPECT_EQ(answer["correction"]["rounds"], 2);
+}
+
+TEST(IdentifyApp, BadSeriesNameRowAndColumn) {
+  EXPECT_EQ(problem_field({{"csv", "time,x\n0,1\n0.1,abc\n"}}).substr(0, 22), "422 csv.rows[1].x: lin");
+  EXPECT_EQ(problem_field({{"csv", "time,x\n0,1\n0.1,2,3\n"}}).substr(0, 21), "422 csv.rows[1]: line");
+  EXPECT_EQ(problem_field({{"csv", "time,x\n0,1\n0,2\n"}}).substr(0, 23), "422 csv.rows[1].time: c");
+  EXPECT_EQ(problem_field({{"csv", "0,1\n0.1,2\n"}}).substr(0, 15), "422 csv.header:");
+  EXPECT_EQ(problem_field({{"time_s", {0, 0.1, 0.2}}, {"probes", {{"x", {1, 2}}}}}).substr(0, 18), "422 probes.x[2]: m");
+  EXPECT_EQ(problem_field({{"time_s", {0, 0.1, 0.2}}, {"probes", {{"x", {1, "a", 3}}}}}).substr(0, 19), "422 probes.x[1]: mu");
+  EXPECT_EQ(problem_field({{"time_s", {0, 0.1}}, {"probes", {{"x", {1, 2}}}}, {"typed", {{"k", 1}, {"c", 1}}}}).substr(0, 12),
+            "422 request:");
+  EXPECT_EQ(problem_field({{"time_s", {0, 0.1}}, {"probes", {{"x", {1, 2}}}}, {"engine", "a b"}}).substr(0, 10), "422 engine");
+  EXPECT_EQ(problem_field({{"time_s", {0, 0.1}}, {"probes", {{"x", {1, 2}}}}, {"bogus", 1}}).substr(0, 9), "422 bogus");
+}
+
+// Mutated recordings (bytes flipped, rows cut, values made huge): each is an answer without NaN or a 4xx,
+// never a crash or another exception.
+TEST(IdentifyApp, MutatedCsvIsAnAnswerOrAProblem) {
+  const std::string good = oscillator_csv(3.0, 0.2, 120);
+  const char noise[] = {',', '\n', '-', 'e', '9', '.', 'x', '\0', ';', '\t'};
+  unsigned state = 19;
+  auto next = [&] { return state = state * 1103515245u + 12345u; };
+  for (int i = 0; i < 200; ++i) {
+    std::string csv = good;
+    for (int k = 0; k < 1 + i % 5; ++k) csv[next() % csv.size()] = noise[next() % sizeof(noise)];
+    if (i % 7 == 0) csv.resize(next() % csv.size());
+    try {
+      const json answer = run_identify({{"csv", csv}});
+      EXPECT_EQ(answer.dump().find("NaN"), std::string::npos);
+    } catch (const codec::Problem& p) {
+      EXPECT_GE(p.status, 400);
+      EXPECT_LT(p.status, 500);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace softtune::app
