@@ -188,8 +188,14 @@ void draw_spring(Builder& b, const View& v, const StrokeSizes& s, const SpringSh
   const double length_px = norm(e - a);
   const double current_m = sp.current_length_m ? *sp.current_length_m
                                                : std::hypot(sp.b_m.x - sp.a_m.x, sp.b_m.y - sp.a_m.y);
-  Rgba colour = spring_colour(current_m, sp.rest_length_m);
+  Rgba colour = sp.style == SpringStyle::rod    ? palette::kRod
+                : sp.style == SpringStyle::link ? palette::kMouseLink
+                                                : spring_colour(current_m, sp.rest_length_m);
   if (sp.ghost) colour = with_alpha(colour, palette::kGhostAlpha / 255.0);
+  if (sp.style == SpringStyle::rod) {
+    b.stroke({a, e}, false, 1.5 * s.spring_px, colour);
+    return;
+  }
   if (length_px < 4.0) {
     b.stroke({a, e}, false, s.spring_px, colour);
     return;
@@ -208,6 +214,43 @@ void draw_spring(Builder& b, const View& v, const StrokeSizes& s, const SpringSh
   pts.push_back(e - dir * lead);
   pts.push_back(e);
   b.stroke(std::move(pts), false, s.spring_px, colour);
+}
+
+// A revolute pin is a ring around a light face (the two bodies turn about it); a weld is a square,
+// which does not turn.
+void draw_pin(Builder& b, const View& v, const StrokeSizes& s, const PinShape& pin) {
+  const double alpha = pin.ghost ? palette::kGhostAlpha / 255.0 : 1.0;
+  const P c = to_px(v, pin.at_m);
+  const double r = 1.3 * s.anchor_radius_px;
+  if (pin.weld) {
+    b.fill_convex({{c.x - r, c.y - r}, {c.x + r, c.y - r}, {c.x + r, c.y + r}, {c.x - r, c.y + r}},
+                  with_alpha(palette::kAnchor, alpha));
+    const double f = 0.45 * r;
+    b.fill_convex({{c.x - f, c.y - f}, {c.x + f, c.y - f}, {c.x + f, c.y + f}, {c.x - f, c.y + f}},
+                  with_alpha(palette::kPinFace, alpha));
+    return;
+  }
+  b.disc(c, r, with_alpha(palette::kAnchor, alpha));
+  b.disc(c, 0.45 * r, with_alpha(palette::kPinFace, alpha));
+}
+
+// A cross-hair with a ring: where a mouse joint pulls its body.
+void draw_target(Builder& b, const View& v, const StrokeSizes& s, const TargetShape& t) {
+  const P c = to_px(v, t.at_m);
+  const double r = 3.0 * s.anchor_radius_px, w = 0.75 * s.outline_px;
+  b.stroke(Builder::circle_points(c, 0.6 * r), true, w, palette::kMouseLink);
+  b.stroke({{c.x - r, c.y}, {c.x + r, c.y}}, false, w, palette::kMouseLink);
+  b.stroke({{c.x, c.y - r}, {c.x, c.y + r}}, false, w, palette::kMouseLink);
+}
+
+// Segments that fade in from transparent at the oldest point to kTrail at the newest.
+void draw_trail(Builder& b, const View& v, const StrokeSizes& s, const Trail& t) {
+  const std::size_t n = t.points_m.size();
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double alpha = static_cast<double>(i + 1) / (n - 1);
+    b.stroke({to_px(v, t.points_m[i]), to_px(v, t.points_m[i + 1])}, false, 0.75 * s.spring_px,
+             with_alpha(palette::kTrail, alpha));
+  }
 }
 
 std::string grid_label(double step) {
@@ -249,6 +292,7 @@ void tessellate(const DrawFrame& f, const View& v, bool fringe_aa, Mesh& out) {
   const double step = grid_step_m(v.pixels_per_m, s.grid_min_spacing_px);
   draw_grid(b, v, step);
   if (f.ground_y_m) draw_ground(b, v, s, *f.ground_y_m);
+  for (const Trail& t : f.trails) draw_trail(b, v, s, t);
   for (const PolygonShape& p : f.polygons) {
     const RoleColours rc = role_colours(p.role);
     std::vector<P> pts = polygon_px(v, p);
@@ -257,6 +301,8 @@ void tessellate(const DrawFrame& f, const View& v, bool fringe_aa, Mesh& out) {
   }
   for (const CircleShape& c : f.circles) draw_circle(b, v, s, c);
   for (const SpringShape& sp : f.springs) draw_spring(b, v, s, sp);
+  for (const PinShape& p : f.pins) draw_pin(b, v, s, p);
+  for (const TargetShape& t : f.targets) draw_target(b, v, s, t);
   for (const AnchorDot& a : f.anchors) {
     b.disc(to_px(v, a.at_m), s.anchor_radius_px,
            a.ghost ? with_alpha(palette::kAnchor, palette::kGhostAlpha / 255.0) : palette::kAnchor);

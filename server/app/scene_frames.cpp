@@ -1,6 +1,10 @@
 #include "app/scene_frames.h"
 
+#include <Eigen/Geometry>
+#include <cmath>
 #include <cstdio>
+#include <set>
+#include <utility>
 
 namespace softtune::app {
 
@@ -13,14 +17,117 @@ render::Role role_of(const scene::BodySnapshot& b) {
   return b.probed ? render::Role::probed : render::Role::dynamic_body;
 }
 
-// Joints that act as springs in the picture; weld and revolute joints show only their anchors.
-bool drawn_as_spring(const scene::JointSnapshot& j) {
-  return j.kind == "distance" || j.kind == "wheel" || j.kind == "mouse";
+int body_index(const scene::Scene& scene, const std::string& id) {
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (scene.bodies[i].id == id) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// A direction fixed in body i at the start, turned with the body to this snapshot.
+Eigen::Vector2d turned(const scene::Scene& scene, const scene::Snapshot& snap, int i, const Eigen::Vector2d& d) {
+  if (i < 0 || i >= static_cast<int>(snap.bodies.size())) return d;
+  return Eigen::Rotation2Dd(snap.bodies[i].angle - scene.bodies[i].angle) * d;
+}
+
+// A wheel joint's anchors coincide at rest (Box2D puts both at the wheel centre), so its spring is drawn
+// the way a suspension looks: from a mount on body_a, up the suspension axis by the distance from the
+// anchor to body_a's centre line, down to the wheel. Box2D's translation is dot(pB - pA, axis), so the
+// drawn length is mount - translation and rests at `mount`.
+render::SpringShape wheel_spring(const scene::Scene& scene, const scene::Snapshot& snap, std::size_t j) {
+  const scene::JointSettings& settings = scene.joints[j];
+  const scene::JointSnapshot& js = snap.joints[j];
+  const int a = body_index(scene, settings.body_a);
+  const Eigen::Vector2d axis0 = settings.axis.normalized();
+  // b2WheelJointDef::Initialize puts both anchors at anchor_b (box2d_scene.cpp).
+  double mount = a >= 0 ? (scene.bodies[a].position - settings.anchor_b).dot(axis0) : 0.0;
+  if (!(mount > 0.05)) mount = 0.5;  // m: an anchor at or above the centre line still shows a spring
+  const Eigen::Vector2d top = js.anchor_a + turned(scene, snap, a, axis0) * mount;
+  render::SpringShape s;
+  s.a_m = vec(top);
+  s.b_m = vec(js.anchor_b);
+  s.rest_length_m = mount;
+  s.current_length_m = (js.anchor_b - top).norm();
+  return s;
+}
+
+void add_joint(render::DrawFrame& frame, const scene::Scene& scene, const scene::Snapshot& snap, std::size_t j) {
+  const scene::JointSettings& settings = scene.joints[j];
+  const scene::JointSnapshot& js = snap.joints[j];
+  switch (settings.kind) {
+    case scene::JointKind::distance: {
+      render::SpringShape s;
+      s.a_m = vec(js.anchor_a);
+      s.b_m = vec(js.anchor_b);
+      s.rest_length_m = js.rest_length.value_or(0.0);
+      s.current_length_m = js.current_length;
+      s.style = settings.tuning ? render::SpringStyle::coil : render::SpringStyle::rod;
+      frame.springs.push_back(s);
+      frame.anchors.push_back({vec(js.anchor_a)});
+      frame.anchors.push_back({vec(js.anchor_b)});
+      return;
+    }
+    case scene::JointKind::wheel: {
+      const render::SpringShape s = wheel_spring(scene, snap, j);
+      frame.springs.push_back(s);
+      frame.anchors.push_back({s.a_m});
+      frame.anchors.push_back({s.b_m});
+      return;
+    }
+    case scene::JointKind::mouse: {
+      // Box2D's mouse joint reports its target as anchor A.
+      render::SpringShape s;
+      s.a_m = vec(js.anchor_a);
+      s.b_m = vec(js.anchor_b);
+      s.rest_length_m = 0.0;
+      s.current_length_m = js.current_length;
+      s.style = render::SpringStyle::link;
+      frame.springs.push_back(s);
+      frame.targets.push_back({vec(js.anchor_a)});
+      frame.anchors.push_back({vec(js.anchor_b)});
+      return;
+    }
+    case scene::JointKind::weld:
+    case scene::JointKind::revolute:
+      frame.pins.push_back({vec(js.anchor_b), settings.kind == scene::JointKind::weld});
+      return;
+  }
+}
+
+// The point a probe follows, as (body index, -1) or (-1, joint index); (-1, -1) for none.
+std::pair<int, int> probed_point(const scene::Scene& scene, const scene::ProbeSettings& p) {
+  switch (p.kind) {
+    case scene::ProbeKind::displacement:
+    case scene::ProbeKind::angle: return {body_index(scene, p.body), -1};
+    case scene::ProbeKind::joint_length:
+    case scene::ProbeKind::joint_angle:
+      for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+        if (scene.joints[j].id == p.joint) return {-1, static_cast<int>(j)};
+      }
+      return {-1, -1};
+    default: return {-1, -1};
+  }
+}
+
+Eigen::Vector2d point_at(const scene::Snapshot& s, std::pair<int, int> point) {
+  return point.first >= 0 ? s.bodies[point.first].center : s.joints[point.second].anchor_b;
 }
 
 }  // namespace
 
-render::DrawFrame scene_frame(const scene::Scene& scene, const scene::Snapshot& snapshot, int index, int count) {
+std::vector<std::pair<int, int>> trailed_points(const scene::Scene& scene) {
+  std::set<std::pair<int, int>> seen;
+  std::vector<std::pair<int, int>> out;
+  for (const scene::ProbeSettings& p : scene.probes) {
+    const auto point = probed_point(scene, p);
+    if ((point.first >= 0 || point.second >= 0) && seen.insert(point).second) out.push_back(point);
+  }
+  return out;
+}
+
+render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots, int index) {
+  const scene::Snapshot& snapshot = snapshots[index];
+  const int count = static_cast<int>(snapshots.size());
   render::DrawFrame frame;
   for (const scene::BodySnapshot& b : snapshot.bodies) {
     if (b.is_circle) {
@@ -32,18 +139,13 @@ render::DrawFrame scene_frame(const scene::Scene& scene, const scene::Snapshot& 
     for (const Eigen::Vector2d& v : b.vertices) polygon.vertices_m.push_back(vec(v));
     frame.polygons.push_back(std::move(polygon));
   }
-  for (const scene::JointSnapshot& j : snapshot.joints) {
-    if (drawn_as_spring(j)) {
-      render::SpringShape spring;
-      spring.a_m = vec(j.anchor_a);
-      spring.b_m = vec(j.anchor_b);
-      // A mouse or wheel joint rests at zero length; 0 draws the spring neutral (palette.h).
-      spring.rest_length_m = j.rest_length.value_or(0.0);
-      spring.current_length_m = j.current_length;
-      frame.springs.push_back(spring);
+  for (std::size_t j = 0; j < snapshot.joints.size() && j < scene.joints.size(); ++j) add_joint(frame, scene, snapshot, j);
+  for (const auto& point : trailed_points(scene)) {
+    render::Trail trail;
+    for (int k = index; k >= 0 && snapshot.time_s - snapshots[k].time_s <= kTrailSeconds + 1e-9; --k) {
+      trail.points_m.insert(trail.points_m.begin(), vec(point_at(snapshots[k], point)));
     }
-    frame.anchors.push_back({vec(j.anchor_a)});
-    frame.anchors.push_back({vec(j.anchor_b)});
+    if (trail.points_m.size() >= 2) frame.trails.push_back(std::move(trail));
   }
   char caption[160];
   std::snprintf(caption, sizeof caption, "%s  t = %.2f s  frame %d/%d", scene.name.c_str(), snapshot.time_s,
@@ -52,13 +154,44 @@ render::DrawFrame scene_frame(const scene::Scene& scene, const scene::Snapshot& 
   return frame;
 }
 
+render::Bounds followed_bounds(const scene::Scene& scene, const scene::Snapshot& snap) {
+  render::Bounds box;
+  const int followed = body_index(scene, scene.camera.follow);
+  if (followed < 0 || followed >= static_cast<int>(snap.bodies.size())) return box;
+  std::set<int> bodies{followed};
+  render::DrawFrame joints;
+  for (std::size_t j = 0; j < scene.joints.size() && j < snap.joints.size(); ++j) {
+    const scene::JointSettings& js = scene.joints[j];
+    if (js.body_a != scene.camera.follow && js.body_b != scene.camera.follow) continue;
+    bodies.insert(body_index(scene, js.body_a));
+    bodies.insert(body_index(scene, js.body_b));
+    add_joint(joints, scene, snap, j);
+  }
+  box.add(render::bounds_of(joints));
+  for (int i : bodies) {
+    if (i < 0 || snap.bodies[i].is_static) continue;
+    const scene::BodySnapshot& b = snap.bodies[i];
+    if (b.is_circle) {
+      box.add(render::Vec2{b.center.x() - b.radius, b.center.y() - b.radius});
+      box.add(render::Vec2{b.center.x() + b.radius, b.center.y() + b.radius});
+    }
+    for (const Eigen::Vector2d& v : b.vertices) box.add(vec(v));
+  }
+  return box;
+}
+
 render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots) {
   render::FrameSet set;
-  set.camera.auto_fit = false;
+  set.camera.auto_fit = scene.camera.fit;
   set.camera.centre_m = vec(scene.camera.center);
   set.camera.width_m = scene.camera.width_m;
+  set.follow.width_m = scene.camera.width_m;
   const int count = static_cast<int>(snapshots.size());
-  for (int i = 0; i < count; ++i) set.frames.push_back(scene_frame(scene, snapshots[i], i, count));
+  for (int i = 0; i < count; ++i) {
+    set.frames.push_back(scene_frame(scene, snapshots, i));
+    set.times_s.push_back(snapshots[i].time_s);
+    if (!scene.camera.follow.empty()) set.follow.bounds_m.push_back(followed_bounds(scene, snapshots[i]));
+  }
   return set;
 }
 

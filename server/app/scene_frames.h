@@ -2,6 +2,7 @@
 // Scene snapshots -> render draw model: the glue between the Box2D scenes and the renderer, which know
 // nothing of each other (STYLE.md: dependencies point one way, server -> scenes/render -> core).
 
+#include <utility>
 #include <vector>
 
 #include "softtune/render/frame_pipeline.h"
@@ -10,12 +11,27 @@
 
 namespace softtune::app {
 
-/// One frame: bodies as polygons or circles coloured by role (static, dynamic, probed), springy joints
-/// (distance, wheel, mouse) as springs with their rest length, every joint's anchors as dots, and a
-/// caption with the scene name, time and frame.
-render::DrawFrame scene_frame(const scene::Scene& scene, const scene::Snapshot& snapshot, int index, int count);
+/// s of motion a probed point's trail shows behind it.
+inline constexpr double kTrailSeconds = 0.5;
 
-/// Every snapshot as a frame, with the scene's camera (fixed: centre and width in metres).
+/// The points the scene's probes follow, once each: (body index, -1) for a body probe (its centre),
+/// (-1, joint index) for a joint probe (the joint's anchor on body_b). Oscillator and joint-error probes
+/// follow no point.
+std::vector<std::pair<int, int>> trailed_points(const scene::Scene& scene);
+
+/// Frame `index` of `snapshots`: bodies as polygons or circles coloured by role (static, dynamic, probed),
+/// every joint by its kind (a soft distance joint or a wheel joint's suspension as a spring coloured by
+/// stretch, a rigid distance joint as a rod, a mouse joint as its target and the soft link to the body,
+/// welds and revolutes as pins), a trail behind each probed point over the last kTrailSeconds, and a
+/// caption with the scene name, time and frame.
+render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots, int index);
+
+/// What a camera following `scene.camera.follow` keeps in view in this snapshot: the body, the bodies
+/// joined to it and those joints as drawn (a car: chassis, wheels, suspension). Empty without follow.
+render::Bounds followed_bounds(const scene::Scene& scene, const scene::Snapshot& snapshot);
+
+/// Every snapshot as a frame, with their times and the scene's camera: fitted to the action over the
+/// run, following `camera.follow`, or (with `camera.fit` false) fixed at centre and width in metres.
 render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots);
 
 }  // namespace softtune::app

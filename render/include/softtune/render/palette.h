@@ -24,6 +24,10 @@ inline constexpr Rgba kSpringStretched{214, 48, 39, 255};   ///< at stretch rati
 inline constexpr Rgba kSpringCompressed{33, 102, 222, 255};  ///< at stretch ratio <= 1 - kFullStretch
 inline constexpr double kFullStretch = 0.3;                  ///< |ratio - 1| that gives the full colour
 inline constexpr std::uint8_t kGhostAlpha = 110;             ///< springs and anchors of the ghost
+inline constexpr Rgba kRod{62, 68, 80, 255};                 ///< a rigid distance joint
+inline constexpr Rgba kMouseLink{142, 58, 196, 255};         ///< a mouse joint's link and target
+inline constexpr Rgba kPinFace{246, 246, 242, 255};          ///< the face inside a pin's ring
+inline constexpr Rgba kTrail{250, 140, 0, 200};              ///< a probed point's path (newest end)
 }  // namespace palette
 
 /// Fill and outline of a role.
