@@ -99,7 +99,10 @@ FrameSet oscillator_frames(const OscillatorScene& s, int frames) {
   FrameSet set;
   const std::vector<OscillatorSample> samples = simulate_oscillator(s, frames);
   set.frames.reserve(samples.size());
-  for (int k = 0; k < frames; ++k) set.frames.push_back(oscillator_frame(s, samples[k], k, frames));
+  for (int k = 0; k < frames; ++k) {
+    set.frames.push_back(oscillator_frame(s, samples[k], k, frames));
+    set.times_s.push_back(samples[k].t_s);
+  }
   return set;
 }
 

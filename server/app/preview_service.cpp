@@ -131,6 +131,9 @@ json PreviewService::answer(const render::PreviewJob& job, const std::string& ur
   json out = encode_preview(*job.wait(), job.from_cache(), [&base](int n) { return base + "/" + std::to_string(n) + ".png"; },
                             base + "/filmstrip.png");
   out["status"] = "done";
+  if (!render::validate_clip(p.total, job.wait()->settings.size)) {
+    out["animation"] = {{"webp", base + "/animation.webp"}, {"gif", base + "/animation.gif"}};
+  }
   out["progress"] = {{"done", p.done}, {"total", p.total}};
   out["progress_url"] = base;
   return out;
@@ -194,6 +197,21 @@ std::optional<std::string> PreviewService::filmstrip_png(const std::string& id) 
   const auto preview = pipeline_.cached(id);
   if (!preview) return std::nullopt;
   return preview->filmstrip_png;
+}
+
+std::optional<std::string> PreviewService::clip(const std::string& id, render::ClipFormat format) {
+  const std::string key = id + "." + std::string(render::clip_format_name(format));
+  if (auto hit = clips_.get(key)) return *hit;
+  const auto preview = pipeline_.cached(id);
+  if (!preview) return std::nullopt;
+  if (auto e = render::validate_clip(static_cast<int>(preview->frames_png.size()), preview->settings.size)) {
+    throw invalid_field(e->field, e->rule);
+  }
+  std::lock_guard lock(clip_mutex_);
+  if (auto hit = clips_.get(key)) return *hit;  // made while this request waited
+  auto bytes = std::make_shared<const std::string>(render::encode_clip(format, preview->frames_png, preview->frame_times_s));
+  clips_.put(key, bytes, bytes->size() + key.size());
+  return *bytes;
 }
 
 }  // namespace softtune::app

@@ -1,0 +1,178 @@
+// scene_frames (server/app/scene_frames.cpp): every joint of every preset drawn by its kind, probe trails,
+// and the camera of the run keeping the bodies and anchors in view below the title band.
+#include "app/scene_frames.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "app/preset_store.h"
+#include "codec/scene_codec.h"
+#include "softtune/render/camera_path.h"
+#include "softtune/scene/runner.h"
+
+namespace softtune::app {
+namespace {
+
+using nlohmann::json;
+
+const std::string kPresets = SOFTTUNE_PRESETS_DIR;
+
+struct PresetRun {
+  json doc;
+  scene::Scene scene;
+  std::vector<scene::Snapshot> snapshots;
+};
+
+// The preset's snapshots as a 60-frame preview takes them (preview_service.cpp, plan_scene).
+PresetRun run(const std::string& name) {
+  PresetRun r;
+  r.doc = load_preset(kPresets, name);
+  r.scene = codec::decode_scene(r.doc);
+  scene::RunOptions options;
+  options.record_frames = true;
+  options.frame_stride = std::max(1, scene::frame_count(r.scene.world) / 59);
+  r.snapshots = scene::run_scene(r.scene, options).snapshots;
+  return r;
+}
+
+std::vector<std::string> scene_presets() {
+  std::vector<std::string> out;
+  for (const std::string& name : list_presets(kPresets)) {
+    if (!load_preset(kPresets, name).value("bodies", json::array()).empty()) out.push_back(name);
+  }
+  return out;
+}
+
+// What the preset's JSON asks for, counted from the document itself (not from the decoded scene).
+struct Counts {
+  int coils = 0, rods = 0, links = 0, targets = 0, pins = 0, welds = 0;
+};
+
+Counts asked(const json& doc) {
+  Counts c;
+  for (const json& j : doc.value("joints", json::array())) {
+    const std::string type = j.at("type");
+    const bool tuned = j.contains("response_frames") || j.contains("frequency_hz");
+    if (type == "wheel" || (type == "distance" && tuned)) ++c.coils;
+    if (type == "distance" && !tuned) ++c.rods;
+    if (type == "mouse") ++c.links, ++c.targets;
+    if (type == "weld" || type == "revolute") ++c.pins;
+    if (type == "weld") ++c.welds;
+  }
+  return c;
+}
+
+Counts drawn(const render::DrawFrame& f) {
+  Counts c;
+  for (const render::SpringShape& s : f.springs) {
+    c.coils += s.style == render::SpringStyle::coil;
+    c.rods += s.style == render::SpringStyle::rod;
+    c.links += s.style == render::SpringStyle::link;
+  }
+  c.targets = static_cast<int>(f.targets.size());
+  c.pins = static_cast<int>(f.pins.size());
+  for (const render::PinShape& p : f.pins) c.welds += p.weld;
+  return c;
+}
+
+TEST(SceneFrames, EveryJointOfEveryPresetIsDrawnByItsKind) {
+  const auto names = scene_presets();
+  ASSERT_GE(names.size(), 5u);
+  for (const std::string& name : names) {
+    SCOPED_TRACE(name);
+    const PresetRun r = run(name);
+    ASSERT_FALSE(r.snapshots.empty());
+    const Counts want = asked(r.doc);
+    for (int i : {0, static_cast<int>(r.snapshots.size()) - 1}) {
+      const Counts got = drawn(scene_frame(r.scene, r.snapshots, i));
+      EXPECT_EQ(got.coils, want.coils);
+      EXPECT_EQ(got.rods, want.rods);
+      EXPECT_EQ(got.links, want.links);
+      EXPECT_EQ(got.targets, want.targets);
+      EXPECT_EQ(got.pins, want.pins);
+      EXPECT_EQ(got.welds, want.welds);
+    }
+  }
+}
+
+TEST(SceneFrames, WheelSpringRunsFromTheChassisMountToTheWheelCentre) {
+  const PresetRun r = run("vehicle");
+  const render::DrawFrame f = scene_frame(r.scene, r.snapshots, 0);
+  ASSERT_EQ(f.springs.size(), 2u);
+  // vehicle.json: chassis centre y = 1.0, wheels at y = 0.4 on a vertical axis: a 0.6 m spring at rest.
+  for (const render::SpringShape& s : f.springs) {
+    EXPECT_NEAR(s.rest_length_m, 0.6, 1e-9);
+    EXPECT_NEAR(s.b_m.y, 0.4, 1e-6);
+    EXPECT_NEAR(s.a_m.y - s.b_m.y, 0.6, 1e-6);
+    EXPECT_NEAR(s.a_m.x, s.b_m.x, 1e-6);
+  }
+  // Later the chassis has sat down on its springs: compressed below the rest length (gravity on 120 kg).
+  const render::DrawFrame later = scene_frame(r.scene, r.snapshots, 15);
+  for (const render::SpringShape& s : later.springs) EXPECT_LT(*s.current_length_m, s.rest_length_m);
+}
+
+TEST(SceneFrames, MouseTargetIsTheJointsTargetAndTheLinkEndsOnTheCrate) {
+  const PresetRun r = run("mouse");
+  const render::DrawFrame f = scene_frame(r.scene, r.snapshots, 0);
+  ASSERT_EQ(f.targets.size(), 1u);
+  EXPECT_NEAR(f.targets[0].at_m.x, r.scene.joints[0].target.x(), 1e-6);
+  EXPECT_NEAR(f.targets[0].at_m.y, r.scene.joints[0].target.y(), 1e-6);
+  ASSERT_EQ(f.springs.size(), 1u);
+  EXPECT_NEAR(f.springs[0].a_m.x, r.scene.joints[0].target.x(), 1e-6);
+  EXPECT_NEAR(f.springs[0].b_m.x, r.scene.joints[0].anchor_b.x(), 1e-6);
+}
+
+TEST(SceneFrames, ProbedPointsLeaveATrailOfTheLastHalfSecond) {
+  const PresetRun r = run("mouse");
+  const int last = static_cast<int>(r.snapshots.size()) - 1;
+  const render::DrawFrame first = scene_frame(r.scene, r.snapshots, 0);
+  const render::DrawFrame f = scene_frame(r.scene, r.snapshots, last);
+  EXPECT_TRUE(first.trails.empty());  // one point is no path yet
+  ASSERT_EQ(f.trails.size(), trailed_points(r.scene).size());
+  const double dt = r.snapshots[1].time_s - r.snapshots[0].time_s;
+  for (const render::Trail& t : f.trails) {
+    EXPECT_EQ(static_cast<int>(t.points_m.size()), static_cast<int>(std::floor(kTrailSeconds / dt + 1e-9)) + 1);
+  }
+}
+
+// The Bar: on every preset and every frame, each moving body's box and every joint point lies inside the
+// view below the title band; with camera.follow, the followed body and what is joined to it does.
+TEST(SceneFrames, CameraKeepsBodiesAndAnchorsInViewBelowTheBand) {
+  for (const std::string& name : scene_presets()) {
+    SCOPED_TRACE(name);
+    const PresetRun r = run(name);
+    const render::FrameSet set = scene_frames(r.scene, r.snapshots);
+    for (render::ImageSize size : {render::ImageSize{640, 360}, render::ImageSize{360, 640}}) {
+      const auto cameras = render::run_cameras(set.camera, set.follow, set.frames, size);
+      ASSERT_EQ(cameras.size(), set.frames.size());
+      for (std::size_t i = 0; i < set.frames.size(); ++i) {
+        const render::Bounds view = render::visible_below_band(cameras[i], size);
+        const auto inside = [&](render::Vec2 p) {
+          return p.x >= view.lo.x - 1e-9 && p.x <= view.hi.x + 1e-9 && p.y >= view.lo.y - 1e-9 && p.y <= view.hi.y + 1e-9;
+        };
+        if (!r.scene.camera.follow.empty()) {
+          const render::Bounds b = set.follow.bounds_m[i];
+          EXPECT_TRUE(inside(b.lo) && inside(b.hi)) << "frame " << i;
+          continue;
+        }
+        const render::DrawFrame& f = set.frames[i];
+        for (const render::PolygonShape& p : f.polygons) {
+          if (p.role == render::Role::static_body) continue;
+          for (render::Vec2 v : p.vertices_m) EXPECT_TRUE(inside(v)) << "frame " << i;
+        }
+        for (const render::CircleShape& c : f.circles) {
+          EXPECT_TRUE(inside({c.centre_m.x - c.radius_m, c.centre_m.y - c.radius_m}) &&
+                      inside({c.centre_m.x + c.radius_m, c.centre_m.y + c.radius_m}))
+              << "frame " << i;
+        }
+        for (const render::PinShape& p : f.pins) EXPECT_TRUE(inside(p.at_m)) << "frame " << i;
+        for (const render::AnchorDot& a : f.anchors) EXPECT_TRUE(inside(a.at_m)) << "frame " << i;
+        for (const render::TargetShape& t : f.targets) EXPECT_TRUE(inside(t.at_m)) << "frame " << i;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace softtune::app
