@@ -80,7 +80,7 @@ void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::M
     std::vector<scene::Snapshot> used(result.snapshots.begin(),
                                       result.snapshots.begin() + std::min<std::size_t>(frames, result.snapshots.size()));
     while (static_cast<int>(used.size()) < frames) used.push_back(used.back());  // a run that stopped early
-    return scene_frames(scene, used);
+    return scene_frames(scene, used, &result);
   };
 }
 

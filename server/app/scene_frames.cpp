@@ -125,6 +125,43 @@ std::vector<std::pair<int, int>> trailed_points(const scene::Scene& scene) {
   return out;
 }
 
+std::vector<std::string> scene_legend(const scene::Scene& scene, const scene::SceneResult& result) {
+  std::vector<std::string> out;
+  for (const scene::JointTuning& t : result.joints) {
+    if (!t.tuned) continue;
+    const scene::ProbeResult* probe = nullptr;
+    for (std::size_t i = 0; i < result.probes.size() && i < scene.probes.size(); ++i) {
+      if (scene.probes[i].joint == t.joint && result.probes[i].measured.frequency_hz && !probe) probe = &result.probes[i];
+    }
+    char line[200];
+    const char* unit = t.angular ? "Hz (rot)" : "Hz";
+    if (probe && probe->measured.damping_ratio) {
+      std::snprintf(line, sizeof line, "%s: asked %.2f %s \u03b6 %.2f \u2192 measured %.2f, \u03b6 %.2f", t.joint.c_str(),
+                    t.requested_frequency_hz, unit, t.requested_damping_ratio, *probe->measured.frequency_hz,
+                    *probe->measured.damping_ratio);
+    } else {
+      std::snprintf(line, sizeof line, "%s: asked %.2f %s \u03b6 %.2f (not measured)", t.joint.c_str(),
+                    t.requested_frequency_hz, unit, t.requested_damping_ratio);
+    }
+    out.push_back(line);
+  }
+  return out;
+}
+
+std::string scene_settings(const scene::Scene& scene) {
+  std::string modes;
+  for (const scene::JointSettings& j : scene.joints) {
+    if (!j.tuning) continue;
+    const std::string m = j.tuning->mode == SoftMode::exact ? "exact" : "standard";
+    if (modes.find(m) == std::string::npos) modes += (modes.empty() ? "" : "+") + m;
+  }
+  char line[160];
+  const int substeps = scene.world.substeps;
+  std::snprintf(line, sizeof line, "%s%s%g fps \u00d7 %d substep%s", modes.c_str(), modes.empty() ? "" : " \u00b7 ",
+                scene.world.fps, substeps, substeps == 1 ? "" : "s");
+  return line;
+}
+
 render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots, int index) {
   const scene::Snapshot& snapshot = snapshots[index];
   const int count = static_cast<int>(snapshots.size());
@@ -148,9 +185,10 @@ render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene
     if (trail.points_m.size() >= 2) frame.trails.push_back(std::move(trail));
   }
   char caption[160];
-  std::snprintf(caption, sizeof caption, "%s  t = %.2f s  frame %d/%d", scene.name.c_str(), snapshot.time_s,
+  std::snprintf(caption, sizeof caption, "%s  \u00b7  t = %.2f s  \u00b7  frame %d/%d", scene.name.c_str(), snapshot.time_s,
                 index + 1, count);
   frame.caption = caption;
+  frame.settings = scene_settings(scene);
   return frame;
 }
 
@@ -180,8 +218,10 @@ render::Bounds followed_bounds(const scene::Scene& scene, const scene::Snapshot&
   return box;
 }
 
-render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots) {
+render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots,
+                              const scene::SceneResult* result) {
   render::FrameSet set;
+  const std::vector<std::string> legend = result ? scene_legend(scene, *result) : std::vector<std::string>{};
   set.camera.auto_fit = scene.camera.fit;
   set.camera.centre_m = vec(scene.camera.center);
   set.camera.width_m = scene.camera.width_m;
@@ -189,6 +229,7 @@ render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene
   const int count = static_cast<int>(snapshots.size());
   for (int i = 0; i < count; ++i) {
     set.frames.push_back(scene_frame(scene, snapshots, i));
+    set.frames.back().legend = legend;
     set.times_s.push_back(snapshots[i].time_s);
     if (!scene.camera.follow.empty()) set.follow.bounds_m.push_back(followed_bounds(scene, snapshots[i]));
   }

@@ -2,10 +2,12 @@
 // Scene snapshots -> render draw model: the glue between the Box2D scenes and the renderer, which know
 // nothing of each other (STYLE.md: dependencies point one way, server -> scenes/render -> core).
 
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "softtune/render/frame_pipeline.h"
+#include "softtune/scene/runner.h"
 #include "softtune/scene/scene.h"
 #include "softtune/scene/snapshot.h"
 
@@ -30,8 +32,17 @@ render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene
 /// joined to it and those joints as drawn (a car: chassis, wheels, suspension). Empty without follow.
 render::Bounds followed_bounds(const scene::Scene& scene, const scene::Snapshot& snapshot);
 
-/// Every snapshot as a frame, with their times and the scene's camera: fitted to the action over the
-/// run, following `camera.follow`, or (with `camera.fit` false) fixed at centre and width in metres.
-render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots);
+/// The legend of a run: per tuned joint, what was asked (frequency, damping ratio) against what its first
+/// probe with a fit measured over the run.
+std::vector<std::string> scene_legend(const scene::Scene& scene, const scene::SceneResult& result);
+
+/// The band's settings line: the tuned joints' mode(s), fps and substeps.
+std::string scene_settings(const scene::Scene& scene);
+
+/// Every snapshot as a frame, with their times, the legend of `result` (when given) and the scene's
+/// camera: fitted to the action over the run, following `camera.follow`, or (with `camera.fit` false)
+/// fixed at centre and width in metres.
+render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots,
+                              const scene::SceneResult* result = nullptr);
 
 }  // namespace softtune::app

@@ -9,6 +9,7 @@
 #include "app/preset_store.h"
 #include "codec/scene_codec.h"
 #include "softtune/render/camera_path.h"
+#include "softtune/render/tessellate.h"
 #include "softtune/scene/runner.h"
 
 namespace softtune::app {
@@ -169,6 +170,39 @@ TEST(SceneFrames, CameraKeepsBodiesAndAnchorsInViewBelowTheBand) {
         for (const render::PinShape& p : f.pins) EXPECT_TRUE(inside(p.at_m)) << "frame " << i;
         for (const render::AnchorDot& a : f.anchors) EXPECT_TRUE(inside(a.at_m)) << "frame " << i;
         for (const render::TargetShape& t : f.targets) EXPECT_TRUE(inside(t.at_m)) << "frame " << i;
+      }
+    }
+  }
+}
+
+// The Bar: the caption, settings and legend land inside the title band, across the image, at both
+// aspect ratios and at the smallest and largest sizes; the legend names every tuned joint.
+TEST(SceneFrames, TextLandsInsideTheTitleBand) {
+  for (const std::string& name : scene_presets()) {
+    SCOPED_TRACE(name);
+    PresetRun r = run(name);
+    scene::RunOptions options;
+    options.record_frames = true;
+    options.frame_stride = std::max(1, scene::frame_count(r.scene.world) / 59);
+    const scene::SceneResult result = scene::run_scene(r.scene, options);
+    const render::FrameSet set = scene_frames(r.scene, result.snapshots, &result);
+    int tuned = 0;
+    for (const scene::JointSettings& j : r.scene.joints) tuned += j.tuning.has_value();
+    EXPECT_EQ(static_cast<int>(set.frames.front().legend.size()), tuned);
+    for (render::ImageSize size : {render::ImageSize{640, 360}, render::ImageSize{360, 640},
+                                   render::ImageSize{1920, 1080}, render::ImageSize{160, 90}}) {
+      const auto cameras = render::run_cameras(set.camera, set.follow, set.frames, size);
+      const double band = render::kCaptionBand * size.height;
+      for (std::size_t i : {std::size_t{0}, set.frames.size() - 1}) {
+        const auto texts = render::layout_text_overlay(set.frames[i], render::make_view(cameras[i], size));
+        ASSERT_GE(texts.size(), 2u);
+        for (const render::PlacedText& t : texts) {
+          if (!t.in_band) continue;
+          EXPECT_GE(t.box.left, 0) << t.text;
+          EXPECT_GE(t.box.top, 0) << t.text;
+          EXPECT_LE(t.box.right, size.width) << t.text << " at " << size.width << "x" << size.height;
+          EXPECT_LE(t.box.bottom, band) << t.text << " at " << size.width << "x" << size.height;
+        }
       }
     }
   }

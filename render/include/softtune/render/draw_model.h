@@ -81,8 +81,7 @@ struct AnchorDot {
   bool ghost = false;
 };
 
-/// A short text at a world position (its lower-left corner). The built-in font has A-Z, 0-9 and
-/// . , : = - + / ( ) % _ ' ; lower case is shown as upper case.
+/// A short text at a world position (its lower-left corner), UTF-8.
 struct Label {
   std::string text;
   Vec2 at_m;
@@ -100,7 +99,9 @@ struct DrawFrame {
   std::vector<AnchorDot> anchors;
   std::vector<Label> labels;
   std::optional<double> ground_y_m;  ///< m; a ground line with earth below when set
-  std::string caption;               ///< top-left text in screen space (time, frame, error)
+  std::string caption;               ///< title band, top-left: what and when (name, time, frame); UTF-8
+  std::string settings;              ///< title band, top-right: mode, fps, substeps (the grid step is added)
+  std::vector<std::string> legend;   ///< title band, under the caption: asked against measured, per joint
 };
 
 /// Where the camera looks. Fixed (from a preset) or fitted to the bounds of every frame of a run.

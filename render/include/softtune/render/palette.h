@@ -18,6 +18,8 @@ inline constexpr Rgba kGrid{40, 50, 70, 28};          ///< faint: lines every gr
 inline constexpr Rgba kEarth{224, 219, 207, 255};     ///< below the ground line
 inline constexpr Rgba kGroundLine{70, 66, 58, 255};
 inline constexpr Rgba kText{28, 30, 36, 255};
+inline constexpr Rgba kBand{252, 252, 249, 235};      ///< the title band's panel
+inline constexpr Rgba kBandRule{40, 50, 70, 60};      ///< the line under the band
 inline constexpr Rgba kAnchor{20, 22, 28, 255};
 inline constexpr Rgba kSpringNeutral{80, 84, 92, 255};
 inline constexpr Rgba kSpringStretched{214, 48, 39, 255};   ///< at stretch ratio >= 1 + kFullStretch
