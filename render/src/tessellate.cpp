@@ -364,8 +364,9 @@ std::vector<PlacedText> layout_text_overlay(const DrawFrame& f, const View& v) {
     std::erase_if(out, [&](const PlacedText& t) { return t.box.right > width || t.box.bottom > band || t.box.left < 0; });
   }
   for (const Label& l : f.labels) {
-    const int x = static_cast<int>(std::lround(v.px(l.at_m.x)));
+    int x = static_cast<int>(std::lround(v.px(l.at_m.x)));
     const int y = static_cast<int>(std::lround(v.py(l.at_m.y))) - line_height_px(s.text_px);
+    if (l.centred) x -= measure_text(l.text, 0, 0, s.text_px).right / 2;
     out.push_back({l.text, x, y, s.text_px, measure_text(l.text, x, y, s.text_px), false});
   }
   return out;

@@ -113,7 +113,75 @@ Eigen::Vector2d point_at(const scene::Snapshot& s, std::pair<int, int> point) {
   return point.first >= 0 ? s.bodies[point.first].center : s.joints[point.second].anchor_b;
 }
 
+const char* method_label(Method m) {
+  switch (m) {
+    case Method::explicit_euler: return "explicit Euler";
+    case Method::semi_implicit_euler: return "semi-implicit";
+    default: return "soft (core)";
+  }
+}
+
 }  // namespace
+
+int left_frame_at(const scene::OscillatorRun& run, double limit_m) {
+  for (std::size_t f = 0; f < run.x.size(); ++f) {
+    if (!std::isfinite(run.x[f]) || std::abs(run.x[f]) > limit_m) return static_cast<int>(f);
+  }
+  return run.diverged_at_s ? static_cast<int>(run.x.size()) : -1;
+}
+
+void add_oscillators(render::DrawFrame& frame, const scene::Scene& scene, const scene::SceneResult& result,
+                     const scene::Snapshot& snap) {
+  int column = 0;
+  for (std::size_t k = 0; k < scene.oscillators.size() && k < result.oscillators.size(); ++k) {
+    const scene::OscillatorSettings& osc = scene.oscillators[k];
+    int j = -1;
+    for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+      if (scene.joints[i].id == osc.joint && scene.joints[i].kind == scene::JointKind::distance) j = static_cast<int>(i);
+    }
+    if (j < 0 || j >= static_cast<int>(snap.joints.size())) continue;
+    const scene::JointSettings& joint = scene.joints[j];
+    const int b = body_index(scene, joint.body_b);
+    if (b < 0) continue;
+    const Eigen::Vector2d along = (joint.anchor_b - joint.anchor_a).normalized();
+    const double rest = joint.length.value_or((joint.anchor_b - joint.anchor_a).norm());
+    // Columns alternate right and left of the joint, 0.7 rest lengths apart (at least the body's width).
+    const scene::BodySnapshot& body = snap.bodies[b];
+    double body_width = 0.0;
+    for (const Eigen::Vector2d& v : body.vertices) body_width = std::max(body_width, 2.0 * std::abs((v - body.center).dot(Eigen::Vector2d(-along.y(), along.x()))));
+    const double gap = std::max(rest, 1.6 * body_width + 0.1);
+    if (++column == 1) frame.labels.push_back({"Box2D (soft)", vec(joint.anchor_a - along * (0.12 * rest)), true});
+    const double side = (column % 2 == 1 ? 1.0 : -1.0) * gap * ((column + 1) / 2);
+    const Eigen::Vector2d offset = Eigen::Vector2d(-along.y(), along.x()) * side;
+    const Eigen::Vector2d top = joint.anchor_a + offset;
+    const scene::OscillatorRun& run = result.oscillators[k];
+    const double limit = kOscillatorLimit * rest;
+    const int left = left_frame_at(run, limit);
+    char label[64];
+    const render::Vec2 label_at = vec(top - along * (0.12 * rest));
+    frame.labels.push_back({method_label(osc.method), label_at, true});
+    if (left >= 0 && snap.frame >= left) {
+      std::snprintf(label, sizeof label, "blew up at frame %d", left);
+      frame.labels.push_back({label, vec(top + along * rest), true});
+      frame.anchors.push_back({vec(top)});
+      continue;
+    }
+    const double x = snap.frame < static_cast<int>(run.x.size()) ? run.x[snap.frame] : 0.0;
+    const Eigen::Vector2d centre = top + along * (rest + x);
+    render::PolygonShape block;
+    block.role = render::Role::dynamic_body;
+    for (const Eigen::Vector2d& v : body.vertices) block.vertices_m.push_back(vec(v - body.center + centre));
+    frame.polygons.push_back(std::move(block));
+    render::SpringShape spring;
+    spring.a_m = vec(top);
+    spring.b_m = vec(centre);
+    spring.rest_length_m = rest;
+    spring.current_length_m = rest + x;
+    frame.springs.push_back(spring);
+    frame.anchors.push_back({vec(top)});
+    frame.anchors.push_back({vec(centre)});
+  }
+}
 
 std::vector<std::pair<int, int>> trailed_points(const scene::Scene& scene) {
   std::set<std::pair<int, int>> seen;
@@ -230,6 +298,7 @@ render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene
   for (int i = 0; i < count; ++i) {
     set.frames.push_back(scene_frame(scene, snapshots, i));
     set.frames.back().legend = legend;
+    if (result) add_oscillators(set.frames.back(), scene, *result, snapshots[i]);
     set.times_s.push_back(snapshots[i].time_s);
     if (!scene.camera.follow.empty()) set.follow.bounds_m.push_back(followed_bounds(scene, snapshots[i]));
   }

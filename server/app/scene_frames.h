@@ -32,6 +32,18 @@ render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene
 /// joined to it and those joints as drawn (a car: chassis, wheels, suspension). Empty without follow.
 render::Bounds followed_bounds(const scene::Scene& scene, const scene::Snapshot& snapshot);
 
+/// |x| (in rest lengths of the joint) past which an oscillator's spring has left the frame.
+inline constexpr double kOscillatorLimit = 0.6;
+
+/// The game frame at which oscillator `run` first passed |x| > limit_m (or blew up), or -1 if never.
+int left_frame_at(const scene::OscillatorRun& run, double limit_m);
+
+/// The scene's oscillators that copy a distance joint (the stiff preset's explicit, semi-implicit and
+/// core soft springs), each drawn as a copy of that joint beside it, labelled with its method, until it
+/// leaves the frame (|x| > kOscillatorLimit rest lengths); from then on "blew up at frame N".
+void add_oscillators(render::DrawFrame& frame, const scene::Scene& scene, const scene::SceneResult& result,
+                     const scene::Snapshot& snapshot);
+
 /// The legend of a run: per tuned joint, what was asked (frequency, damping ratio) against what its first
 /// probe with a fit measured over the run.
 std::vector<std::string> scene_legend(const scene::Scene& scene, const scene::SceneResult& result);

@@ -175,6 +175,41 @@ TEST(SceneFrames, CameraKeepsBodiesAndAnchorsInViewBelowTheBand) {
   }
 }
 
+// The stiff preset (20 Hz at 60 fps, omega h = 2.1): explicit and semi-implicit Euler leave the frame
+// (semi-implicit Euler is stable only for omega h < 2), the core soft spring does not; each is drawn beside
+// the Box2D spring until then, and "blew up at frame N" after.
+TEST(SceneFrames, StiffPresetDrawsTheOscillatorsUntilTheyBlowUp) {
+  PresetRun r = run("stiff");
+  scene::RunOptions options;
+  options.record_frames = true;
+  const scene::SceneResult result = scene::run_scene(r.scene, options);
+  const double rest = *r.scene.joints[0].length;
+  ASSERT_EQ(result.oscillators.size(), 3u);
+  std::vector<int> left;
+  for (const scene::OscillatorRun& o : result.oscillators) left.push_back(left_frame_at(o, kOscillatorLimit * rest));
+  EXPECT_GT(left[0], 0);   // explicit Euler
+  EXPECT_GT(left[1], 0);   // semi-implicit Euler
+  EXPECT_EQ(left[2], -1);  // soft: calm
+  const render::FrameSet set = scene_frames(r.scene, result.snapshots, &result);
+  const auto labels_with = [](const render::DrawFrame& f, const std::string& text) {
+    int n = 0;
+    for (const render::Label& l : f.labels) n += l.text.find(text) != std::string::npos;
+    return n;
+  };
+  // Frame 0: the Box2D spring and all three copies, each a block and a spring.
+  EXPECT_EQ(set.frames[0].springs.size(), 4u);
+  EXPECT_EQ(labels_with(set.frames[0], "blew up"), 0);
+  const int late = std::max(left[0], left[1]);
+  const render::DrawFrame& f = set.frames[late];
+  EXPECT_EQ(f.springs.size(), 2u);  // Box2D and the core soft spring
+  EXPECT_EQ(labels_with(f, "blew up at frame " + std::to_string(left[0])), 1);
+  EXPECT_EQ(labels_with(f, "blew up at frame " + std::to_string(left[1])), 1);
+  // Until a copy leaves, its block sits at rest + x along the joint: it stays within the limit.
+  for (const render::SpringShape& s : set.frames[left[0] - 1].springs) {
+    EXPECT_LE(std::abs(*s.current_length_m - rest), kOscillatorLimit * rest + 1e-9);
+  }
+}
+
 // The Bar: the caption, settings and legend land inside the title band, across the image, at both
 // aspect ratios and at the smallest and largest sizes; the legend names every tuned joint.
 TEST(SceneFrames, TextLandsInsideTheTitleBand) {

@@ -81,10 +81,12 @@ struct AnchorDot {
   bool ghost = false;
 };
 
-/// A short text at a world position (its lower-left corner), UTF-8.
+/// A short text at a world position (its lower-left corner, or the middle of its bottom when
+/// `centred`), UTF-8.
 struct Label {
   std::string text;
   Vec2 at_m;
+  bool centred = false;
 };
 
 /// One frame of a scene. Drawn back to front: grid, ground, trails, polygons and circles in order,
