@@ -260,6 +260,29 @@ render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene
   return frame;
 }
 
+void add_ghost(render::DrawFrame& frame, const scene::Scene& ghost, const scene::Snapshot& snap) {
+  for (const scene::BodySnapshot& b : snap.bodies) {
+    if (b.is_static) continue;
+    if (b.is_circle) {
+      frame.circles.push_back({vec(b.center), b.radius, b.angle, render::Role::ghost});
+      continue;
+    }
+    render::PolygonShape polygon;
+    polygon.role = render::Role::ghost;
+    for (const Eigen::Vector2d& v : b.vertices) polygon.vertices_m.push_back(vec(v));
+    frame.polygons.push_back(std::move(polygon));
+  }
+  for (std::size_t j = 0; j < snap.joints.size() && j < ghost.joints.size(); ++j) {
+    if (!ghost.joints[j].tuning) continue;
+    render::DrawFrame joint;
+    add_joint(joint, ghost, snap, j);
+    for (render::SpringShape& s : joint.springs) {
+      s.ghost = true;
+      frame.springs.push_back(s);
+    }
+  }
+}
+
 render::Bounds followed_bounds(const scene::Scene& scene, const scene::Snapshot& snap) {
   render::Bounds box;
   const int followed = body_index(scene, scene.camera.follow);

@@ -28,6 +28,10 @@ std::vector<std::pair<int, int>> trailed_points(const scene::Scene& scene);
 /// caption with the scene name, time and frame.
 render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots, int index);
 
+/// The A/B ghost (ghost_tuning.h): the moving bodies of a second tuning's snapshot, translucent pink
+/// (Role::ghost), and its tuned joints' springs translucent, drawn over the frame.
+void add_ghost(render::DrawFrame& frame, const scene::Scene& ghost, const scene::Snapshot& snapshot);
+
 /// What a camera following `scene.camera.follow` keeps in view in this snapshot: the body, the bodies
 /// joined to it and those joints as drawn (a car: chassis, wheels, suspension). Empty without follow.
 render::Bounds followed_bounds(const scene::Scene& scene, const scene::Snapshot& snapshot);
