@@ -49,7 +49,7 @@ void add_oscillators(render::DrawFrame& frame, const scene::Scene& scene, const 
                      const scene::Snapshot& snapshot);
 
 /// The legend of a run: per tuned joint, what was asked (frequency, damping ratio) against what its first
-/// probe with a fit measured over the run.
+/// probe with a fit measured over the run; joints no probe measures grouped by what was asked.
 std::vector<std::string> scene_legend(const scene::Scene& scene, const scene::SceneResult& result);
 
 /// The band's settings line: the tuned joints' mode(s), fps and substeps.

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "app/preset_store.h"
@@ -221,9 +222,21 @@ TEST(SceneFrames, TextLandsInsideTheTitleBand) {
     options.frame_stride = std::max(1, scene::frame_count(r.scene.world) / 59);
     const scene::SceneResult result = scene::run_scene(r.scene, options);
     const render::FrameSet set = scene_frames(r.scene, result.snapshots, &result);
+    // Every tuned joint a probe measures has its line; the others are grouped, so no more lines than joints.
+    const std::vector<std::string>& legend = set.frames.front().legend;
     int tuned = 0;
     for (const scene::JointSettings& j : r.scene.joints) tuned += j.tuning.has_value();
-    EXPECT_EQ(static_cast<int>(set.frames.front().legend.size()), tuned);
+    EXPECT_LE(static_cast<int>(legend.size()), tuned);
+    EXPECT_EQ(legend.empty(), tuned == 0);
+    for (std::size_t p = 0; p < result.probes.size(); ++p) {
+      const std::string& joint = r.scene.probes[p].joint;
+      if (joint.empty() || !result.probes[p].measured.frequency_hz || !result.probes[p].measured.damping_ratio) continue;
+      bool tuned_joint = false;
+      for (const scene::JointSettings& j : r.scene.joints) tuned_joint = tuned_joint || (j.id == joint && j.tuning);
+      if (!tuned_joint) continue;
+      const auto has = [&](const std::string& line) { return line.rfind(joint + ": asked", 0) == 0; };
+      EXPECT_TRUE(std::any_of(legend.begin(), legend.end(), has)) << joint;
+    }
     for (render::ImageSize size : {render::ImageSize{640, 360}, render::ImageSize{360, 640},
                                    render::ImageSize{1920, 1080}, render::ImageSize{160, 90}}) {
       const auto cameras = render::run_cameras(set.camera, set.follow, set.frames, size);
