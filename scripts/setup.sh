@@ -23,6 +23,7 @@ packages=(
   libbullet-dev                      # engines/bullet, tests/engines/bullet: Bullet 3.24
   libwebp-dev libgif-dev             # render: preview clips (WebPAnimEncoder, giflib)
   libfreetype-dev libfontconfig-dev fonts-dejavu-core  # render: anti-aliased preview text (DejaVu Sans)
+  libxml2-dev                        # tests/app: the check's JUnit XML validated against its XSD, parsed back
 )
 
 missing=()
