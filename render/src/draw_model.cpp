@@ -33,6 +33,11 @@ Bounds bounds_of(const DrawFrame& f) {
     b.add(s.b_m);
   }
   for (const AnchorDot& a : f.anchors) b.add(a.at_m);
+  for (const PinShape& p : f.pins) b.add(p.at_m);
+  for (const TargetShape& t : f.targets) b.add(t.at_m);
+  for (const Trail& t : f.trails) {
+    for (Vec2 v : t.points_m) b.add(v);
+  }
   // The ground has no horizontal extent; its height still belongs in the picture.
   if (f.ground_y_m && !b.empty()) b.add(Vec2{b.lo.x, *f.ground_y_m});
   return b;

@@ -68,12 +68,14 @@ void Filmstrip::place(int index, std::span<const std::uint8_t> rgba, ImageSize f
       for (int c = 0; c < 4; ++c) q[c] = static_cast<std::uint8_t>((sum[c] + s * s / 2) / (s * s));
     }
   }
-  // The frame number, top-left, dark on white: one font dot per pixel.
+  // The frame number, top-left, dark on white.
+  constexpr int kTagPx = 10;
   const std::string tag = std::to_string(index);
-  const int tag_w = text_width_px(tag, 1) + 3, tag_h = kGlyphHeight + 4;
+  const TextBox box = measure_text(tag, 0, 0, kTagPx);
+  const int tag_w = box.right + 4, tag_h = box.bottom + 2;
   if (tag_w > tw || tag_h > th) return;
   fill(pixels_, layout_.sheet.width, x0, y0, tag_w, tag_h, kTagBackground);
-  blit_text(pixels_, layout_.sheet, tag, x0 + 2, y0 + 2, 1, palette::kText);
+  blit_text(pixels_, layout_.sheet, tag, x0 + 2, y0 + 1, kTagPx, palette::kText);
 }
 
 std::string Filmstrip::encode(PngOptions options) const { return encode_png(pixels_, layout_.sheet, options); }

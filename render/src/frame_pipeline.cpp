@@ -24,6 +24,7 @@ struct JobState {
 
   // Filled before the first task is queued, then read-only until finish().
   FrameSet frames;
+  std::vector<Camera> cameras;  // one per frame
   std::optional<Filmstrip> filmstrip;
   double prepare_ms = 0.0;
   std::vector<std::string> pngs;  // each worker writes only its own frames' entries
@@ -68,15 +69,14 @@ std::optional<FieldError> validate_preview_settings(const PreviewSettings& s) {
 }
 
 Camera run_camera(const FrameSet& set, ImageSize size) {
-  if (!set.camera.auto_fit) return set.camera;
-  Bounds all;
-  for (const DrawFrame& f : set.frames) all.add(bounds_of(f));
-  return fit_camera(all, static_cast<double>(size.width) / size.height);
+  const std::vector<Camera> cameras = run_cameras(set.camera, set.follow, set.frames, size);
+  return cameras.empty() ? set.camera : cameras.front();
 }
 
 // What the cache really holds: string capacities, not sizes.
 std::size_t Preview::bytes() const {
-  std::size_t n = sizeof(Preview) + id.capacity() + filmstrip_png.capacity() + frames_png.capacity() * sizeof(std::string);
+  std::size_t n = sizeof(Preview) + id.capacity() + filmstrip_png.capacity() + frames_png.capacity() * sizeof(std::string) +
+                  frame_times_s.capacity() * sizeof(double);
   for (const std::string& f : frames_png) n += f.capacity();
   return n;
 }
@@ -208,7 +208,7 @@ std::shared_ptr<PreviewJob> FramePipeline::submit(std::string_view canonical_req
     job->complete(nullptr, e.what());
     throw;
   }
-  job->frames.camera = run_camera(job->frames, settings.size);
+  job->cameras = run_cameras(job->frames.camera, job->frames.follow, job->frames.frames, settings.size);
   job->filmstrip.emplace(filmstrip_layout(settings.frames, settings.filmstrip_every, settings.size));
   job->pngs.resize(settings.frames);
   job->ready = std::make_unique<std::atomic<bool>[]>(settings.frames);
@@ -256,7 +256,7 @@ void FramePipeline::run_task(const Task& task, std::unique_ptr<Renderer>& render
       pixels.resize(rgba_bytes(size));
       if (!renderer) renderer = options_.make_renderer();
       const auto t0 = Clock::now();
-      renderer->render(job.frames.frames[task.index], job.frames.camera, size, pixels);
+      renderer->render(job.frames.frames[task.index], job.cameras[task.index], size, pixels);
       job.filmstrip->place(task.index, pixels, size);
       const auto t1 = Clock::now();
       job.pngs[task.index] = encode_png(pixels, size, options_.png);
@@ -290,6 +290,11 @@ void FramePipeline::finish(JobState& job) {
         std::lock_guard lock(job.mutex);  // frame_png() may be reading a frame of this job
         preview->frames_png = std::move(job.pngs);
       }
+      preview->frame_times_s = job.frames.times_s;
+      if (preview->frame_times_s.size() != preview->frames_png.size()) {
+        preview->frame_times_s.resize(preview->frames_png.size());
+        for (std::size_t i = 0; i < preview->frame_times_s.size(); ++i) preview->frame_times_s[i] = i / 60.0;
+      }
       const auto t0 = Clock::now();
       preview->filmstrip_png = job.filmstrip->encode(options_.png);
       preview->stages.add(Stage::render);
@@ -308,6 +313,7 @@ void FramePipeline::finish(JobState& job) {
     }
   }
   job.frames = {};
+  job.cameras.clear();
   job.filmstrip.reset();
   {
     std::lock_guard lock(jobs_mutex_);

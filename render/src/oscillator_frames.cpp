@@ -30,7 +30,7 @@ void add_spring(DrawFrame& f, const OscillatorScene& s, double cx, double cy, bo
   f.anchors.push_back({face, ghost});
 }
 
-const char* method_title(Method m) { return m == Method::soft_exact ? "SOFT EXACT" : "SOFT"; }
+const char* method_title(Method m) { return m == Method::soft_exact ? "soft exact" : "soft"; }
 
 }  // namespace
 
@@ -83,15 +83,20 @@ DrawFrame oscillator_frame(const OscillatorScene& s, const OscillatorSample& sam
   add_spring(f, s, x_sim, y_sim, false);
   add_spring(f, s, x_exact, y_exact, true);
 
-  f.labels.push_back({std::string("SIMULATED (") + method_title(s.method) + ")", {0.12, kOscillatorBlockSize + 0.06}});
-  f.labels.push_back({"EXACT (ANALYTIC)", {0.12, shelf_top(s) + kOscillatorBlockSize + 0.06}});
+  f.labels.push_back({std::string("simulated (") + method_title(s.method) + ")", {0.12, kOscillatorBlockSize + 0.06}});
+  f.labels.push_back({"exact (analytic)", {0.12, shelf_top(s) + kOscillatorBlockSize + 0.06}});
 
   const double f_hz = s.omega / (2.0 * 3.141592653589793);
-  char line[160];
-  std::snprintf(line, sizeof line, "%s  %.2f HZ  ZETA %.2f  %g FPS X %d\nFRAME %d/%d  T %.3f S  ERROR %+.3f M",
-                method_title(s.method), f_hz, s.damping_ratio, s.fps, s.substeps, index, frames, sample.t_s,
-                sample.simulated.x - sample.analytic.x);
+  char line[200];
+  std::snprintf(line, sizeof line, "oscillator  \u00b7  t = %.3f s  \u00b7  frame %d/%d", sample.t_s, index, frames);
   f.caption = line;
+  std::snprintf(line, sizeof line, "%s \u00b7 %g fps \u00d7 %d substep%s", s.method == Method::soft_exact ? "exact" : "standard",
+                s.fps, s.substeps, s.substeps == 1 ? "" : "s");
+  f.settings = line;
+  std::snprintf(line, sizeof line, "asked %.2f Hz \u03b6 %.2f, m %.3g kg", f_hz, s.damping_ratio, s.mass_kg);
+  f.legend.push_back(line);
+  std::snprintf(line, sizeof line, "error %+.3f m against the exact motion", sample.simulated.x - sample.analytic.x);
+  f.legend.push_back(line);
   return f;
 }
 
@@ -99,7 +104,10 @@ FrameSet oscillator_frames(const OscillatorScene& s, int frames) {
   FrameSet set;
   const std::vector<OscillatorSample> samples = simulate_oscillator(s, frames);
   set.frames.reserve(samples.size());
-  for (int k = 0; k < frames; ++k) set.frames.push_back(oscillator_frame(s, samples[k], k, frames));
+  for (int k = 0; k < frames; ++k) {
+    set.frames.push_back(oscillator_frame(s, samples[k], k, frames));
+    set.times_s.push_back(samples[k].t_s);
+  }
   return set;
 }
 

@@ -74,4 +74,19 @@ std::string encode_png(std::span<const std::uint8_t> rgba, ImageSize size, PngOp
   return out;
 }
 
+std::vector<std::uint8_t> decode_png(std::string_view png, ImageSize& size) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_memory(&image, png.data(), png.size())) {
+    throw std::runtime_error(std::string("not a PNG: ") + image.message);
+  }
+  image.format = PNG_FORMAT_RGBA;
+  std::vector<std::uint8_t> rgba(PNG_IMAGE_SIZE(image));
+  if (!png_image_finish_read(&image, nullptr, rgba.data(), 0, nullptr)) {
+    throw std::runtime_error(std::string("PNG decode failed: ") + image.message);
+  }
+  size = {static_cast<int>(image.width), static_cast<int>(image.height)};
+  return rgba;
+}
+
 }  // namespace softtune::render

@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <numbers>
 
-#include "softtune/render/font.h"
 #include "softtune/render/text.h"
 
 namespace softtune::render {
@@ -188,8 +187,14 @@ void draw_spring(Builder& b, const View& v, const StrokeSizes& s, const SpringSh
   const double length_px = norm(e - a);
   const double current_m = sp.current_length_m ? *sp.current_length_m
                                                : std::hypot(sp.b_m.x - sp.a_m.x, sp.b_m.y - sp.a_m.y);
-  Rgba colour = spring_colour(current_m, sp.rest_length_m);
+  Rgba colour = sp.style == SpringStyle::rod    ? palette::kRod
+                : sp.style == SpringStyle::link ? palette::kMouseLink
+                                                : spring_colour(current_m, sp.rest_length_m);
   if (sp.ghost) colour = with_alpha(colour, palette::kGhostAlpha / 255.0);
+  if (sp.style == SpringStyle::rod) {
+    b.stroke({a, e}, false, 1.5 * s.spring_px, colour);
+    return;
+  }
   if (length_px < 4.0) {
     b.stroke({a, e}, false, s.spring_px, colour);
     return;
@@ -210,10 +215,54 @@ void draw_spring(Builder& b, const View& v, const StrokeSizes& s, const SpringSh
   b.stroke(std::move(pts), false, s.spring_px, colour);
 }
 
+// A revolute pin is a ring around a light face (the two bodies turn about it); a weld is a square,
+// which does not turn.
+void draw_pin(Builder& b, const View& v, const StrokeSizes& s, const PinShape& pin) {
+  const double alpha = pin.ghost ? palette::kGhostAlpha / 255.0 : 1.0;
+  const P c = to_px(v, pin.at_m);
+  const double r = 1.3 * s.anchor_radius_px;
+  if (pin.weld) {
+    b.fill_convex({{c.x - r, c.y - r}, {c.x + r, c.y - r}, {c.x + r, c.y + r}, {c.x - r, c.y + r}},
+                  with_alpha(palette::kAnchor, alpha));
+    const double f = 0.45 * r;
+    b.fill_convex({{c.x - f, c.y - f}, {c.x + f, c.y - f}, {c.x + f, c.y + f}, {c.x - f, c.y + f}},
+                  with_alpha(palette::kPinFace, alpha));
+    return;
+  }
+  b.disc(c, r, with_alpha(palette::kAnchor, alpha));
+  b.disc(c, 0.45 * r, with_alpha(palette::kPinFace, alpha));
+}
+
+// A cross-hair with a ring: where a mouse joint pulls its body.
+void draw_target(Builder& b, const View& v, const StrokeSizes& s, const TargetShape& t) {
+  const P c = to_px(v, t.at_m);
+  const double r = 3.0 * s.anchor_radius_px, w = 0.75 * s.outline_px;
+  b.stroke(Builder::circle_points(c, 0.6 * r), true, w, palette::kMouseLink);
+  b.stroke({{c.x - r, c.y}, {c.x + r, c.y}}, false, w, palette::kMouseLink);
+  b.stroke({{c.x, c.y - r}, {c.x, c.y + r}}, false, w, palette::kMouseLink);
+}
+
+// Segments that fade in from transparent at the oldest point to kTrail at the newest.
+void draw_trail(Builder& b, const View& v, const StrokeSizes& s, const Trail& t) {
+  const std::size_t n = t.points_m.size();
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double alpha = static_cast<double>(i + 1) / (n - 1);
+    b.stroke({to_px(v, t.points_m[i]), to_px(v, t.points_m[i + 1])}, false, 0.75 * s.spring_px,
+             with_alpha(palette::kTrail, alpha));
+  }
+}
+
 std::string grid_label(double step) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "GRID %g M", step);
+  std::snprintf(buf, sizeof buf, "grid %g m", step);
   return buf;
+}
+
+// The title band's panel: a lighter strip with a rule under it, so the band reads as the frame's header.
+void draw_band(Builder& b, const View& v) {
+  const double h = std::round(kCaptionBand * v.size.height);
+  b.rect(0.0, 0.0, v.size.width, h, palette::kBand);
+  b.rect(0.0, h - 1.0, v.size.width, h, palette::kBandRule);
 }
 
 }  // namespace
@@ -225,7 +274,7 @@ StrokeSizes stroke_sizes(ImageSize size) {
       .spring_px = 2.0 * s,
       .ground_px = 2.0 * s,
       .anchor_radius_px = 3.5 * s,
-      .text_dot_px = std::max(1, static_cast<int>(std::lround(size.height / 200.0))),
+      .text_px = std::max(8, static_cast<int>(std::lround(size.height * 0.036))),
       .grid_min_spacing_px = 36.0 * s,
   };
 }
@@ -249,6 +298,8 @@ void tessellate(const DrawFrame& f, const View& v, bool fringe_aa, Mesh& out) {
   const double step = grid_step_m(v.pixels_per_m, s.grid_min_spacing_px);
   draw_grid(b, v, step);
   if (f.ground_y_m) draw_ground(b, v, s, *f.ground_y_m);
+  draw_band(b, v);
+  for (const Trail& t : f.trails) draw_trail(b, v, s, t);
   for (const PolygonShape& p : f.polygons) {
     const RoleColours rc = role_colours(p.role);
     std::vector<P> pts = polygon_px(v, p);
@@ -257,25 +308,72 @@ void tessellate(const DrawFrame& f, const View& v, bool fringe_aa, Mesh& out) {
   }
   for (const CircleShape& c : f.circles) draw_circle(b, v, s, c);
   for (const SpringShape& sp : f.springs) draw_spring(b, v, s, sp);
+  for (const PinShape& p : f.pins) draw_pin(b, v, s, p);
+  for (const TargetShape& t : f.targets) draw_target(b, v, s, t);
   for (const AnchorDot& a : f.anchors) {
     b.disc(to_px(v, a.at_m), s.anchor_radius_px,
            a.ghost ? with_alpha(palette::kAnchor, palette::kGhostAlpha / 255.0) : palette::kAnchor);
   }
 }
 
-void draw_text_overlay(const DrawFrame& f, const View& v, std::span<std::uint8_t> rgba) {
+std::vector<PlacedText> layout_text_overlay(const DrawFrame& f, const View& v) {
   const StrokeSizes s = stroke_sizes(v.size);
-  const int dot = s.text_dot_px;
-  for (const Label& l : f.labels) {
-    blit_text(rgba, v.size, l.text, static_cast<int>(std::lround(v.px(l.at_m.x))),
-              static_cast<int>(std::lround(v.py(l.at_m.y))) - kGlyphHeight * dot, dot, palette::kText);
+  const int width = v.size.width, band = static_cast<int>(std::lround(kCaptionBand * v.size.height));
+  const int margin = std::max(2, s.text_px / 2);
+  std::string settings = f.settings;
+  settings += (settings.empty() ? "" : "  \u00b7  ") + grid_label(grid_step_m(v.pixels_per_m, s.grid_min_spacing_px));
+  const std::string caption = f.caption;
+  // Shrink the text until the first line (caption and settings side by side) and the legend (one
+  // column if the band has the rows, else two) fit across and down the band.
+  const auto layout = [&](int px, int columns, std::vector<PlacedText>& placed) {
+    placed.clear();
+    const int line = line_height_px(px);
+    const int rows = std::max(1, (band - 2 * margin) / line);
+    const TextBox cap = measure_text(caption, margin, margin, px);
+    const TextBox set = measure_text(settings, 0, margin, px);
+    const int caption_lines = 1 + static_cast<int>(std::count(caption.begin(), caption.end(), '\n'));
+    bool fits = cap.right + 2 * margin + (set.right - set.left) <= width - margin && caption_lines <= rows;
+    placed.push_back({caption, margin, margin, px, cap});
+    const int sx = width - margin - (set.right - set.left);
+    placed.push_back({settings, sx, margin, px, measure_text(settings, sx, margin, px)});
+    const int legend_rows = rows - caption_lines, column = (width - 2 * margin) / columns;
+    const int room = columns * std::max(0, legend_rows);
+    const int n = static_cast<int>(f.legend.size());
+    for (int k = 0; k < n && k < room; ++k) {
+      std::string text = f.legend[k];
+      if (k == room - 1 && n > room) text = "+" + std::to_string(n - room + 1) + " more";
+      const int x = margin + (k % columns) * column, y = margin + (caption_lines + k / columns) * line;
+      const TextBox box = measure_text(text, x, y, px);
+      fits = fits && box.right <= x + column - margin;
+      placed.push_back({text, x, y, px, box});
+    }
+    fits = fits && (n == 0 || room >= n);
+    for (const PlacedText& t : placed) fits = fits && t.box.bottom <= band - 1;
+    return fits;
+  };
+  std::vector<PlacedText> out;
+  bool done = false;
+  for (int px = s.text_px; px >= 7 && !done; --px) {
+    for (int columns : {1, 2}) {
+      if ((done = layout(px, columns, out))) break;
+    }
   }
-  const int margin = 4 * dot;
-  if (!f.caption.empty()) blit_text(rgba, v.size, f.caption, margin, margin, dot, palette::kText);
-  const std::string grid = grid_label(grid_step_m(v.pixels_per_m, s.grid_min_spacing_px));
-  // Bottom right: the caption owns the top and may be long.
-  blit_text(rgba, v.size, grid, v.size.width - margin - text_width_px(grid, dot),
-            v.size.height - margin - kGlyphHeight * dot, dot, palette::kText);
+  if (!done) {
+    // Too small for everything: keep what fits at the smallest size, whole lines only.
+    layout(7, 2, out);
+    std::erase_if(out, [&](const PlacedText& t) { return t.box.right > width || t.box.bottom > band || t.box.left < 0; });
+  }
+  for (const Label& l : f.labels) {
+    int x = static_cast<int>(std::lround(v.px(l.at_m.x)));
+    const int y = static_cast<int>(std::lround(v.py(l.at_m.y))) - line_height_px(s.text_px);
+    if (l.centred) x -= measure_text(l.text, 0, 0, s.text_px).right / 2;
+    out.push_back({l.text, x, y, s.text_px, measure_text(l.text, x, y, s.text_px), false});
+  }
+  return out;
+}
+
+void draw_text_overlay(const DrawFrame& f, const View& v, std::span<std::uint8_t> rgba) {
+  for (const PlacedText& t : layout_text_overlay(f, v)) blit_text(rgba, v.size, t.text, t.x, t.y, t.px, palette::kText);
 }
 
 }  // namespace softtune::render

@@ -257,6 +257,9 @@ std::optional<FieldError> validate_scene(const Scene& s) {
   if (auto e = check_rate_lists(s.rates.fps, s.rates.substeps, "rates")) return e;
   if (!finite_vector(s.camera.center, limits::kMaxWorldCoordinate)) return FieldError{"camera.center", "must be finite, within the world coordinate range"};
   if (!in(s.camera.width_m, limits::kMinSize, limits::kMaxWorldCoordinate)) return FieldError{"camera.width_m", range(limits::kMinSize, limits::kMaxWorldCoordinate, "m")};
+  if (!s.camera.follow.empty() && std::none_of(s.bodies.begin(), s.bodies.end(), [&](const BodySettings& b) { return b.id == s.camera.follow; })) {
+    return FieldError{"camera.follow", "must name a body of the scene"};
+  }
   if (s.bodies.size() > limits::kMaxBodies) return FieldError{"bodies", "must hold at most " + std::to_string(limits::kMaxBodies) + " bodies"};
   if (s.joints.size() > limits::kMaxJoints) return FieldError{"joints", "must hold at most " + std::to_string(limits::kMaxJoints) + " joints"};
   if (s.oscillators.size() > limits::kMaxOscillators) return FieldError{"oscillators", "must hold at most " + std::to_string(limits::kMaxOscillators)};

@@ -11,6 +11,7 @@
 #include "codec/preview_codec.h"
 #include "codec/problem.h"
 #include "codec/scene_codec.h"
+#include "app/ghost_tuning.h"
 #include "app/scene_frames.h"
 #include "codec/tune_codec.h"
 #include "softtune/render/oscillator_frames.h"
@@ -54,8 +55,11 @@ void plan_oscillator(PreviewPlan& plan, const TuneRequest& request, double initi
   };
 }
 
-void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::MassModel> mass_model) {
+void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::MassModel> mass_model,
+                const json* ghost_doc) {
   const scene::Scene scene = decode_scene(scene_doc);
+  std::optional<scene::Scene> ghost;
+  if (ghost_doc) ghost = ghost_scene(scene, *ghost_doc);
   const int total = scene::frame_count(scene.world);
   if (total + 1 < plan.settings.frames) {
     plan.warnings.push_back({{"code", "frames_clamped"},
@@ -71,10 +75,10 @@ void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::M
   plan.frame_dt_s = options.frame_stride / scene.world.fps;
   plan.canonical = "scene:" + scene_doc.dump() + "|mass_model:" +
                    (mass_model ? std::string(scene::mass_model_name(*mass_model)) : "scene") +
-                   "|stride:" + std::to_string(options.frame_stride);
+                   "|stride:" + std::to_string(options.frame_stride) + (ghost_doc ? "|ghost:" + ghost_doc->dump() : "");
   const int frames = plan.settings.frames;
   auto stages = plan.prepare_stages;
-  plan.make_frames = [scene, options, frames, stages] {
+  plan.make_frames = [scene, ghost, options, frames, stages] {
     const scene::SceneResult result = scene::run_scene(scene, options);
     stages->append(result.stages);
     if (result.error) throw invalid_field(result.error->field, result.error->rule);
@@ -83,7 +87,18 @@ void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::M
     std::vector<scene::Snapshot> used(result.snapshots.begin(),
                                       result.snapshots.begin() + std::min<std::size_t>(frames, result.snapshots.size()));
     while (static_cast<int>(used.size()) < frames) used.push_back(used.back());  // a run that stopped early
-    return scene_frames(scene, used);
+    render::FrameSet set = scene_frames(scene, used, &result);
+    if (ghost) {
+      const scene::SceneResult b = scene::run_scene(*ghost, options);
+      if (b.error) throw invalid_field("ghost", b.error->rule);
+      for (int i = 0; i < frames && !b.snapshots.empty(); ++i) {
+        add_ghost(set.frames[i], *ghost, b.snapshots[std::min<std::size_t>(i, b.snapshots.size() - 1)]);
+      }
+      if (!set.frames.empty()) {
+        for (render::DrawFrame& f : set.frames) f.legend.push_back("pink ghost: " + scene_legend(*ghost, b).front());
+      }
+    }
+    return set;
   };
 }
 
@@ -101,10 +116,15 @@ PreviewPlan plan_preview(const json& request, const std::string& presets_dir) {
   const bool has_tune_fields = std::any_of(std::begin(kTuneFields), std::end(kTuneFields),
                                            [&r](const char* key) { return r.has(key); });
   const bool oscillator_preset = r.has("preset") && request["preset"] == "oscillator";
+  const json* ghost = r.raw("ghost");
+  if (ghost && !(r.has("preset") || r.has("scene"))) {
+    throw invalid_field("ghost", "a second tuning applies to preset and scene previews (the oscillator has its exact ghost)");
+  }
   if ((r.has("preset") || r.has("scene")) && has_tune_fields) {
     throw invalid_field("preset", "give a preset or scene, or tune fields for the oscillator, not both");
   }
   if (oscillator_preset) {
+    if (ghost) throw invalid_field("ghost", "a second tuning applies to Box2D scene previews (the oscillator has its exact ghost)");
     r.raw("preset");
     double x0 = 0.5;
     json preset = load_preset(presets_dir, "oscillator");
@@ -112,7 +132,7 @@ PreviewPlan plan_preview(const json& request, const std::string& presets_dir) {
     const json tuning = oscillator_preset_tuning(preset, x0);
     plan_oscillator(plan, decode_tune_request(tuning), x0);
   } else if (r.has("preset") || r.has("scene")) {
-    plan_scene(plan, requested_scene_document(r, request, presets_dir, {}), mass_model);
+    plan_scene(plan, requested_scene_document(r, request, presets_dir, {}), mass_model, ghost);
   } else if (has_tune_fields) {
     plan_oscillator(plan, read_tune_fields(r), 0.5);
   } else {
@@ -136,6 +156,9 @@ json PreviewService::answer(const render::PreviewJob& job, const std::string& ur
   json out = encode_preview(*job.wait(), job.from_cache(), [&base](int n) { return base + "/" + std::to_string(n) + ".png"; },
                             base + "/filmstrip.png");
   out["status"] = "done";
+  if (!render::validate_clip(p.total, job.wait()->settings.size)) {
+    out["animation"] = {{"webp", base + "/animation.webp"}, {"gif", base + "/animation.gif"}};
+  }
   out["progress"] = {{"done", p.done}, {"total", p.total}, {"ready", p.ready}};
   out["progress_url"] = base;
   return out;
@@ -204,6 +227,21 @@ std::optional<std::string> PreviewService::filmstrip_png(const std::string& id) 
   const auto preview = pipeline_.cached(id);
   if (!preview) return std::nullopt;
   return preview->filmstrip_png;
+}
+
+std::optional<std::string> PreviewService::clip(const std::string& id, render::ClipFormat format) {
+  const std::string key = id + "." + std::string(render::clip_format_name(format));
+  if (auto hit = clips_.get(key)) return *hit;
+  const auto preview = pipeline_.cached(id);
+  if (!preview) return std::nullopt;
+  if (auto e = render::validate_clip(static_cast<int>(preview->frames_png.size()), preview->settings.size)) {
+    throw invalid_field(e->field, e->rule);
+  }
+  std::lock_guard lock(clip_mutex_);
+  if (auto hit = clips_.get(key)) return *hit;  // made while this request waited
+  auto bytes = std::make_shared<const std::string>(render::encode_clip(format, preview->frames_png, preview->frame_times_s));
+  clips_.put(key, bytes, bytes->size() + key.size());
+  return *bytes;
 }
 
 }  // namespace softtune::app

@@ -7,11 +7,13 @@
 
 #include <atomic>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "softtune/render/clip.h"
 #include "softtune/render/frame_pipeline.h"
 
 namespace softtune::app {
@@ -38,6 +40,9 @@ PreviewPlan plan_preview(const nlohmann::json& request, const std::string& prese
 /// "wait": false, with a `wait_declined` warning; its render goes on.
 inline constexpr int kMaxPreviewWaiters = 2;
 
+/// Bytes of clips kept (LRU), beside the frame pipeline's own cache.
+inline constexpr std::size_t kClipCacheBytes = std::size_t{64} << 20;
+
 class PreviewService {
  public:
   explicit PreviewService(render::PipelineOptions options = {}, int max_waiters = kMaxPreviewWaiters);
@@ -49,6 +54,10 @@ class PreviewService {
   /// PNG bytes of frame n, or of the filmstrip; nullopt when the id or frame is unknown.
   std::optional<std::string> frame_png(const std::string& id, int n);
   std::optional<std::string> filmstrip_png(const std::string& id);
+  /// The finished preview as an animated WebP or GIF (render/clip.h), made on first ask and kept in a
+  /// byte-bounded cache of its own; nullopt when the id is unknown. One clip encodes at a time, so clips
+  /// never take more than one core; a preview above render::caps::kMaxClipPixels is a 422 naming `frames`.
+  std::optional<std::string> clip(const std::string& id, render::ClipFormat format);
 
   support::LruStats cache_stats() const { return pipeline_.cache_stats(); }
 
@@ -56,6 +65,8 @@ class PreviewService {
   nlohmann::json answer(const render::PreviewJob& job, const std::string& url_prefix) const;
 
   render::FramePipeline pipeline_;
+  support::LruCache<std::string, std::string> clips_{support::LruBounds{.max_bytes = kClipCacheBytes}};
+  std::mutex clip_mutex_;  ///< held while a clip encodes
   const int max_waiters_;
   std::atomic<int> waiters_{0};
 };

@@ -1,6 +1,11 @@
 #include "app/scene_frames.h"
 
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <set>
+#include <utility>
 
 namespace softtune::app {
 
@@ -13,14 +18,235 @@ render::Role role_of(const scene::BodySnapshot& b) {
   return b.probed ? render::Role::probed : render::Role::dynamic_body;
 }
 
-// Joints that act as springs in the picture; weld and revolute joints show only their anchors.
-bool drawn_as_spring(const scene::JointSnapshot& j) {
-  return j.kind == "distance" || j.kind == "wheel" || j.kind == "mouse";
+int body_index(const scene::Scene& scene, const std::string& id) {
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (scene.bodies[i].id == id) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// A direction fixed in body i at the start, turned with the body to this snapshot.
+Eigen::Vector2d turned(const scene::Scene& scene, const scene::Snapshot& snap, int i, const Eigen::Vector2d& d) {
+  if (i < 0 || i >= static_cast<int>(snap.bodies.size())) return d;
+  return Eigen::Rotation2Dd(snap.bodies[i].angle - scene.bodies[i].angle) * d;
+}
+
+// A wheel joint's anchors coincide at rest (Box2D puts both at the wheel centre), so its spring is drawn
+// the way a suspension looks: from a mount on body_a, up the suspension axis by the distance from the
+// anchor to body_a's centre line, down to the wheel. Box2D's translation is dot(pB - pA, axis), so the
+// drawn length is mount - translation and rests at `mount`.
+render::SpringShape wheel_spring(const scene::Scene& scene, const scene::Snapshot& snap, std::size_t j) {
+  const scene::JointSettings& settings = scene.joints[j];
+  const scene::JointSnapshot& js = snap.joints[j];
+  const int a = body_index(scene, settings.body_a);
+  const Eigen::Vector2d axis0 = settings.axis.normalized();
+  // b2WheelJointDef::Initialize puts both anchors at anchor_b (box2d_scene.cpp).
+  double mount = a >= 0 ? (scene.bodies[a].position - settings.anchor_b).dot(axis0) : 0.0;
+  if (!(mount > 0.05)) mount = 0.5;  // m: an anchor at or above the centre line still shows a spring
+  const Eigen::Vector2d top = js.anchor_a + turned(scene, snap, a, axis0) * mount;
+  render::SpringShape s;
+  s.a_m = vec(top);
+  s.b_m = vec(js.anchor_b);
+  s.rest_length_m = mount;
+  s.current_length_m = (js.anchor_b - top).norm();
+  return s;
+}
+
+void add_joint(render::DrawFrame& frame, const scene::Scene& scene, const scene::Snapshot& snap, std::size_t j) {
+  const scene::JointSettings& settings = scene.joints[j];
+  const scene::JointSnapshot& js = snap.joints[j];
+  switch (settings.kind) {
+    case scene::JointKind::distance: {
+      render::SpringShape s;
+      s.a_m = vec(js.anchor_a);
+      s.b_m = vec(js.anchor_b);
+      s.rest_length_m = js.rest_length.value_or(0.0);
+      s.current_length_m = js.current_length;
+      s.style = settings.tuning ? render::SpringStyle::coil : render::SpringStyle::rod;
+      frame.springs.push_back(s);
+      frame.anchors.push_back({vec(js.anchor_a)});
+      frame.anchors.push_back({vec(js.anchor_b)});
+      return;
+    }
+    case scene::JointKind::wheel: {
+      const render::SpringShape s = wheel_spring(scene, snap, j);
+      frame.springs.push_back(s);
+      frame.anchors.push_back({s.a_m});
+      frame.anchors.push_back({s.b_m});
+      return;
+    }
+    case scene::JointKind::mouse: {
+      // Box2D's mouse joint reports its target as anchor A.
+      render::SpringShape s;
+      s.a_m = vec(js.anchor_a);
+      s.b_m = vec(js.anchor_b);
+      s.rest_length_m = 0.0;
+      s.current_length_m = js.current_length;
+      s.style = render::SpringStyle::link;
+      frame.springs.push_back(s);
+      frame.targets.push_back({vec(js.anchor_a)});
+      frame.anchors.push_back({vec(js.anchor_b)});
+      return;
+    }
+    case scene::JointKind::weld:
+    case scene::JointKind::revolute:
+      frame.pins.push_back({vec(js.anchor_b), settings.kind == scene::JointKind::weld});
+      return;
+  }
+}
+
+// The point a probe follows, as (body index, -1) or (-1, joint index); (-1, -1) for none.
+std::pair<int, int> probed_point(const scene::Scene& scene, const scene::ProbeSettings& p) {
+  switch (p.kind) {
+    case scene::ProbeKind::displacement:
+    case scene::ProbeKind::angle: return {body_index(scene, p.body), -1};
+    case scene::ProbeKind::joint_length:
+    case scene::ProbeKind::joint_angle:
+      for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+        if (scene.joints[j].id == p.joint) return {-1, static_cast<int>(j)};
+      }
+      return {-1, -1};
+    default: return {-1, -1};
+  }
+}
+
+Eigen::Vector2d point_at(const scene::Snapshot& s, std::pair<int, int> point) {
+  return point.first >= 0 ? s.bodies[point.first].center : s.joints[point.second].anchor_b;
+}
+
+const char* method_label(Method m) {
+  switch (m) {
+    case Method::explicit_euler: return "explicit Euler";
+    case Method::semi_implicit_euler: return "semi-implicit";
+    default: return "soft (core)";
+  }
 }
 
 }  // namespace
 
-render::DrawFrame scene_frame(const scene::Scene& scene, const scene::Snapshot& snapshot, int index, int count) {
+int left_frame_at(const scene::OscillatorRun& run, double limit_m) {
+  for (std::size_t f = 0; f < run.x.size(); ++f) {
+    if (!std::isfinite(run.x[f]) || std::abs(run.x[f]) > limit_m) return static_cast<int>(f);
+  }
+  return run.diverged_at_s ? static_cast<int>(run.x.size()) : -1;
+}
+
+void add_oscillators(render::DrawFrame& frame, const scene::Scene& scene, const scene::SceneResult& result,
+                     const scene::Snapshot& snap) {
+  int column = 0;
+  for (std::size_t k = 0; k < scene.oscillators.size() && k < result.oscillators.size(); ++k) {
+    const scene::OscillatorSettings& osc = scene.oscillators[k];
+    int j = -1;
+    for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+      if (scene.joints[i].id == osc.joint && scene.joints[i].kind == scene::JointKind::distance) j = static_cast<int>(i);
+    }
+    if (j < 0 || j >= static_cast<int>(snap.joints.size())) continue;
+    const scene::JointSettings& joint = scene.joints[j];
+    const int b = body_index(scene, joint.body_b);
+    if (b < 0) continue;
+    const Eigen::Vector2d along = (joint.anchor_b - joint.anchor_a).normalized();
+    const double rest = joint.length.value_or((joint.anchor_b - joint.anchor_a).norm());
+    // Columns alternate right and left of the joint, 0.7 rest lengths apart (at least the body's width).
+    const scene::BodySnapshot& body = snap.bodies[b];
+    double body_width = 0.0;
+    for (const Eigen::Vector2d& v : body.vertices) body_width = std::max(body_width, 2.0 * std::abs((v - body.center).dot(Eigen::Vector2d(-along.y(), along.x()))));
+    const double gap = std::max(rest, 1.6 * body_width + 0.1);
+    if (++column == 1) frame.labels.push_back({"Box2D (soft)", vec(joint.anchor_a - along * (0.12 * rest)), true});
+    const double side = (column % 2 == 1 ? 1.0 : -1.0) * gap * ((column + 1) / 2);
+    const Eigen::Vector2d offset = Eigen::Vector2d(-along.y(), along.x()) * side;
+    const Eigen::Vector2d top = joint.anchor_a + offset;
+    const scene::OscillatorRun& run = result.oscillators[k];
+    const double limit = kOscillatorLimit * rest;
+    const int left = left_frame_at(run, limit);
+    char label[64];
+    const render::Vec2 label_at = vec(top - along * (0.12 * rest));
+    frame.labels.push_back({method_label(osc.method), label_at, true});
+    if (left >= 0 && snap.frame >= left) {
+      std::snprintf(label, sizeof label, "blew up at frame %d", left);
+      frame.labels.push_back({label, vec(top + along * rest), true});
+      frame.anchors.push_back({vec(top)});
+      continue;
+    }
+    const double x = snap.frame < static_cast<int>(run.x.size()) ? run.x[snap.frame] : 0.0;
+    const Eigen::Vector2d centre = top + along * (rest + x);
+    render::PolygonShape block;
+    block.role = render::Role::dynamic_body;
+    for (const Eigen::Vector2d& v : body.vertices) block.vertices_m.push_back(vec(v - body.center + centre));
+    frame.polygons.push_back(std::move(block));
+    render::SpringShape spring;
+    spring.a_m = vec(top);
+    spring.b_m = vec(centre);
+    spring.rest_length_m = rest;
+    spring.current_length_m = rest + x;
+    frame.springs.push_back(spring);
+    frame.anchors.push_back({vec(top)});
+    frame.anchors.push_back({vec(centre)});
+  }
+}
+
+std::vector<std::pair<int, int>> trailed_points(const scene::Scene& scene) {
+  std::set<std::pair<int, int>> seen;
+  std::vector<std::pair<int, int>> out;
+  for (const scene::ProbeSettings& p : scene.probes) {
+    const auto point = probed_point(scene, p);
+    if ((point.first >= 0 || point.second >= 0) && seen.insert(point).second) out.push_back(point);
+  }
+  return out;
+}
+
+std::vector<std::string> scene_legend(const scene::Scene& scene, const scene::SceneResult& result) {
+  std::vector<std::string> out;
+  // Joints no probe measures are grouped by what was asked ("hanger_0 … hanger_9 (10): asked ..."), so a
+  // bridge's ten hangers take one line and the measured ones stay readable.
+  struct Group {
+    std::string ask, first, last;
+    int count = 0;
+  };
+  std::vector<Group> unmeasured;
+  for (const scene::JointTuning& t : result.joints) {
+    if (!t.tuned) continue;
+    const scene::ProbeResult* probe = nullptr;
+    for (std::size_t i = 0; i < result.probes.size() && i < scene.probes.size(); ++i) {
+      if (scene.probes[i].joint == t.joint && result.probes[i].measured.frequency_hz && !probe) probe = &result.probes[i];
+    }
+    char ask[96], line[200];
+    std::snprintf(ask, sizeof ask, "asked %.2f %s \u03b6 %.2f", t.requested_frequency_hz, t.angular ? "Hz (rot)" : "Hz",
+                  t.requested_damping_ratio);
+    if (probe && probe->measured.damping_ratio) {
+      std::snprintf(line, sizeof line, "%s: %s \u2192 measured %.2f, \u03b6 %.2f", t.joint.c_str(), ask,
+                    *probe->measured.frequency_hz, *probe->measured.damping_ratio);
+      out.push_back(line);
+      continue;
+    }
+    auto g = std::find_if(unmeasured.begin(), unmeasured.end(), [&](const Group& x) { return x.ask == ask; });
+    if (g == unmeasured.end()) g = unmeasured.insert(unmeasured.end(), Group{ask, t.joint, t.joint, 0});
+    g->last = t.joint;
+    ++g->count;
+  }
+  for (const Group& g : unmeasured) {
+    const std::string who = g.count == 1 ? g.first : g.first + " \u2026 " + g.last + " (" + std::to_string(g.count) + ")";
+    out.push_back(who + ": " + g.ask + " (not measured)");
+  }
+  return out;
+}
+
+std::string scene_settings(const scene::Scene& scene) {
+  std::string modes;
+  for (const scene::JointSettings& j : scene.joints) {
+    if (!j.tuning) continue;
+    const std::string m = j.tuning->mode == SoftMode::exact ? "exact" : "standard";
+    if (modes.find(m) == std::string::npos) modes += (modes.empty() ? "" : "+") + m;
+  }
+  char line[160];
+  const int substeps = scene.world.substeps;
+  std::snprintf(line, sizeof line, "%s%s%g fps \u00d7 %d substep%s", modes.c_str(), modes.empty() ? "" : " \u00b7 ",
+                scene.world.fps, substeps, substeps == 1 ? "" : "s");
+  return line;
+}
+
+render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots, int index) {
+  const scene::Snapshot& snapshot = snapshots[index];
+  const int count = static_cast<int>(snapshots.size());
   render::DrawFrame frame;
   for (const scene::BodySnapshot& b : snapshot.bodies) {
     if (b.is_circle) {
@@ -32,33 +258,87 @@ render::DrawFrame scene_frame(const scene::Scene& scene, const scene::Snapshot& 
     for (const Eigen::Vector2d& v : b.vertices) polygon.vertices_m.push_back(vec(v));
     frame.polygons.push_back(std::move(polygon));
   }
-  for (const scene::JointSnapshot& j : snapshot.joints) {
-    if (drawn_as_spring(j)) {
-      render::SpringShape spring;
-      spring.a_m = vec(j.anchor_a);
-      spring.b_m = vec(j.anchor_b);
-      // A mouse or wheel joint rests at zero length; 0 draws the spring neutral (palette.h).
-      spring.rest_length_m = j.rest_length.value_or(0.0);
-      spring.current_length_m = j.current_length;
-      frame.springs.push_back(spring);
+  for (std::size_t j = 0; j < snapshot.joints.size() && j < scene.joints.size(); ++j) add_joint(frame, scene, snapshot, j);
+  for (const auto& point : trailed_points(scene)) {
+    render::Trail trail;
+    for (int k = index; k >= 0 && snapshot.time_s - snapshots[k].time_s <= kTrailSeconds + 1e-9; --k) {
+      trail.points_m.insert(trail.points_m.begin(), vec(point_at(snapshots[k], point)));
     }
-    frame.anchors.push_back({vec(j.anchor_a)});
-    frame.anchors.push_back({vec(j.anchor_b)});
+    if (trail.points_m.size() >= 2) frame.trails.push_back(std::move(trail));
   }
   char caption[160];
-  std::snprintf(caption, sizeof caption, "%s  t = %.2f s  frame %d/%d", scene.name.c_str(), snapshot.time_s,
+  std::snprintf(caption, sizeof caption, "%s  \u00b7  t = %.2f s  \u00b7  frame %d/%d", scene.name.c_str(), snapshot.time_s,
                 index + 1, count);
   frame.caption = caption;
+  frame.settings = scene_settings(scene);
   return frame;
 }
 
-render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots) {
+void add_ghost(render::DrawFrame& frame, const scene::Scene& ghost, const scene::Snapshot& snap) {
+  for (const scene::BodySnapshot& b : snap.bodies) {
+    if (b.is_static) continue;
+    if (b.is_circle) {
+      frame.circles.push_back({vec(b.center), b.radius, b.angle, render::Role::ghost});
+      continue;
+    }
+    render::PolygonShape polygon;
+    polygon.role = render::Role::ghost;
+    for (const Eigen::Vector2d& v : b.vertices) polygon.vertices_m.push_back(vec(v));
+    frame.polygons.push_back(std::move(polygon));
+  }
+  for (std::size_t j = 0; j < snap.joints.size() && j < ghost.joints.size(); ++j) {
+    if (!ghost.joints[j].tuning) continue;
+    render::DrawFrame joint;
+    add_joint(joint, ghost, snap, j);
+    for (render::SpringShape& s : joint.springs) {
+      s.ghost = true;
+      frame.springs.push_back(s);
+    }
+  }
+}
+
+render::Bounds followed_bounds(const scene::Scene& scene, const scene::Snapshot& snap) {
+  render::Bounds box;
+  const int followed = body_index(scene, scene.camera.follow);
+  if (followed < 0 || followed >= static_cast<int>(snap.bodies.size())) return box;
+  std::set<int> bodies{followed};
+  render::DrawFrame joints;
+  for (std::size_t j = 0; j < scene.joints.size() && j < snap.joints.size(); ++j) {
+    const scene::JointSettings& js = scene.joints[j];
+    if (js.body_a != scene.camera.follow && js.body_b != scene.camera.follow) continue;
+    bodies.insert(body_index(scene, js.body_a));
+    bodies.insert(body_index(scene, js.body_b));
+    add_joint(joints, scene, snap, j);
+  }
+  box.add(render::bounds_of(joints));
+  for (int i : bodies) {
+    if (i < 0 || snap.bodies[i].is_static) continue;
+    const scene::BodySnapshot& b = snap.bodies[i];
+    if (b.is_circle) {
+      box.add(render::Vec2{b.center.x() - b.radius, b.center.y() - b.radius});
+      box.add(render::Vec2{b.center.x() + b.radius, b.center.y() + b.radius});
+    }
+    for (const Eigen::Vector2d& v : b.vertices) box.add(vec(v));
+  }
+  return box;
+}
+
+render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots,
+                              const scene::SceneResult* result) {
   render::FrameSet set;
-  set.camera.auto_fit = false;
+  const std::vector<std::string> legend = result ? scene_legend(scene, *result) : std::vector<std::string>{};
+  set.camera.auto_fit = scene.camera.fit;
   set.camera.centre_m = vec(scene.camera.center);
   set.camera.width_m = scene.camera.width_m;
+  set.follow.width_m = scene.camera.width_m;
   const int count = static_cast<int>(snapshots.size());
-  for (int i = 0; i < count; ++i) set.frames.push_back(scene_frame(scene, snapshots[i], i, count));
+  for (int i = 0; i < count; ++i) {
+    set.frames.push_back(scene_frame(scene, snapshots, i));
+    set.frames.back().legend = legend;
+    if (result) add_oscillators(set.frames.back(), scene, *result, snapshots[i]);
+    set.times_s.push_back(snapshots[i].time_s);
+    if (!scene.camera.follow.empty()) set.follow.bounds_m.push_back(followed_bounds(scene, snapshots[i]));
+  }
   return set;
 }
 

@@ -2,20 +2,63 @@
 // Scene snapshots -> render draw model: the glue between the Box2D scenes and the renderer, which know
 // nothing of each other (STYLE.md: dependencies point one way, server -> scenes/render -> core).
 
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "softtune/render/frame_pipeline.h"
+#include "softtune/scene/runner.h"
 #include "softtune/scene/scene.h"
 #include "softtune/scene/snapshot.h"
 
 namespace softtune::app {
 
-/// One frame: bodies as polygons or circles coloured by role (static, dynamic, probed), springy joints
-/// (distance, wheel, mouse) as springs with their rest length, every joint's anchors as dots, and a
-/// caption with the scene name, time and frame.
-render::DrawFrame scene_frame(const scene::Scene& scene, const scene::Snapshot& snapshot, int index, int count);
+/// s of motion a probed point's trail shows behind it.
+inline constexpr double kTrailSeconds = 0.5;
 
-/// Every snapshot as a frame, with the scene's camera (fixed: centre and width in metres).
-render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots);
+/// The points the scene's probes follow, once each: (body index, -1) for a body probe (its centre),
+/// (-1, joint index) for a joint probe (the joint's anchor on body_b). Oscillator and joint-error probes
+/// follow no point.
+std::vector<std::pair<int, int>> trailed_points(const scene::Scene& scene);
+
+/// Frame `index` of `snapshots`: bodies as polygons or circles coloured by role (static, dynamic, probed),
+/// every joint by its kind (a soft distance joint or a wheel joint's suspension as a spring coloured by
+/// stretch, a rigid distance joint as a rod, a mouse joint as its target and the soft link to the body,
+/// welds and revolutes as pins), a trail behind each probed point over the last kTrailSeconds, and a
+/// caption with the scene name, time and frame.
+render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots, int index);
+
+/// The A/B ghost (ghost_tuning.h): the moving bodies of a second tuning's snapshot, translucent pink
+/// (Role::ghost), and its tuned joints' springs translucent, drawn over the frame.
+void add_ghost(render::DrawFrame& frame, const scene::Scene& ghost, const scene::Snapshot& snapshot);
+
+/// What a camera following `scene.camera.follow` keeps in view in this snapshot: the body, the bodies
+/// joined to it and those joints as drawn (a car: chassis, wheels, suspension). Empty without follow.
+render::Bounds followed_bounds(const scene::Scene& scene, const scene::Snapshot& snapshot);
+
+/// |x| (in rest lengths of the joint) past which an oscillator's spring has left the frame.
+inline constexpr double kOscillatorLimit = 0.6;
+
+/// The game frame at which oscillator `run` first passed |x| > limit_m (or blew up), or -1 if never.
+int left_frame_at(const scene::OscillatorRun& run, double limit_m);
+
+/// The scene's oscillators that copy a distance joint (the stiff preset's explicit, semi-implicit and
+/// core soft springs), each drawn as a copy of that joint beside it, labelled with its method, until it
+/// leaves the frame (|x| > kOscillatorLimit rest lengths); from then on "blew up at frame N".
+void add_oscillators(render::DrawFrame& frame, const scene::Scene& scene, const scene::SceneResult& result,
+                     const scene::Snapshot& snapshot);
+
+/// The legend of a run: per tuned joint, what was asked (frequency, damping ratio) against what its first
+/// probe with a fit measured over the run; joints no probe measures grouped by what was asked.
+std::vector<std::string> scene_legend(const scene::Scene& scene, const scene::SceneResult& result);
+
+/// The band's settings line: the tuned joints' mode(s), fps and substeps.
+std::string scene_settings(const scene::Scene& scene);
+
+/// Every snapshot as a frame, with their times, the legend of `result` (when given) and the scene's
+/// camera: fitted to the action over the run, following `camera.follow`, or (with `camera.fit` false)
+/// fixed at centre and width in metres.
+render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots,
+                              const scene::SceneResult* result = nullptr);
 
 }  // namespace softtune::app

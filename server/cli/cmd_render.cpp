@@ -21,13 +21,15 @@ constexpr const char* kHelp = R"(softtune render: preview frames of a preset as 
     --mass-model M        effective | box2d_reduced (scene presets)
     --size WxH            frame size in pixels (default 640x360, at most 1920x1080)
     --filmstrip-every N   frames between filmstrip tiles (default: about 10 tiles)
+    --animation F         also write the frames as a clip: webp or gif (DIR/animation.F)
   the oscillator preset's tuning, as in `softtune tune` (default: the preset's own):
     --request FILE        a tune request JSON (- for stdin), or these flags:
     --response-frames N   one oscillation period lasts N frames
     --basis-fps B   --frequency F   --oscillation free|some|none   --damping-ratio Z
     --mass M   --fps F   --substeps N   --mode standard|exact
 
-Writes DIR/frame_0000.png ... and DIR/filmstrip.png, and prints {id, frames, filmstrip, stages, timings}.
+Writes DIR/frame_0000.png ... and DIR/filmstrip.png (and DIR/animation.webp or .gif), and prints
+{id, frames, filmstrip, animation, stages, timings}.
 Presets: every file in presets/; oscillator draws the soft method beside the exact analytic ghost.
 Bad input: exit code 2 and a problem JSON on stderr naming the field.
 )";
@@ -67,7 +69,7 @@ int run_render(const Args& args) {
   return guarded([&] {
     std::vector<std::string> with_value = flag_names(kTuneFlags);
     with_value.insert(with_value.end(), {"preset", "frames", "size", "filmstrip-every", "out", "request", "presets",
-                                         "mass-model"});
+                                         "mass-model", "animation"});
     const Flags flags = parse_flags(args, with_value, {"help"});
     if (flags.has("help")) {
       std::cout << kHelp;
@@ -92,6 +94,11 @@ int run_render(const Args& args) {
     if (flags.has("filmstrip-every")) request["filmstrip_every"] = flag_number(flags, "filmstrip-every");
     if (auto size = flags.get("size")) request["size"] = *size;
     if (auto model = flags.get("mass-model")) request["mass_model"] = *model;
+    std::optional<render::ClipFormat> clip;
+    if (auto name = flags.get("animation")) {
+      clip = render::clip_format(*name);
+      if (!clip) throw codec::invalid_field("--animation", "must be webp or gif");
+    }
     const std::filesystem::path dir(*out_dir);
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
@@ -115,6 +122,11 @@ int run_render(const Args& args) {
     }
     write_file(dir / "filmstrip.png", *previews.filmstrip_png(id));
     out["filmstrip"] = (dir / "filmstrip.png").string();
+    if (clip) {
+      const auto path = dir / ("animation." + std::string(render::clip_format_name(*clip)));
+      write_file(path, *previews.clip(id, *clip));
+      out["animation"] = path.string();
+    }
     out.erase("progress_url");
     print_json(out);
     return kExitOk;

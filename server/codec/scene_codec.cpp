@@ -293,6 +293,8 @@ Scene decode_scene(const json& doc) {
   if (auto camera = r.object("camera")) {
     s.camera.center = read_vec2(*camera, "center", s.camera.center);
     if (auto v = camera->number("width_m")) s.camera.width_m = *v;
+    s.camera.fit = read_bool(*camera, "fit", s.camera.fit);
+    if (auto v = camera->string("follow")) s.camera.follow = *v;
     camera->finish();
   }
   read_list(r, "bodies", [&](ObjectReader& o, const std::string&) { s.bodies.push_back(read_body(o)); });
@@ -333,7 +335,8 @@ json encode_scene_result(const Scene& scene, const SceneResult& r) {
       {"max_constraint_error", number_or_null(r.max_constraint_error)},
       {"finite", r.finite},
       {"left_world", r.left_world},
-      {"camera", {{"center", vec2_json(scene.camera.center)}, {"width_m", number_or_null(scene.camera.width_m)}}},
+      {"camera", {{"center", vec2_json(scene.camera.center)}, {"width_m", number_or_null(scene.camera.width_m)},
+                  {"fit", scene.camera.fit}, {"follow", scene.camera.follow}}},
   };
   if (!r.snapshots.empty()) {
     json frames = json::array();

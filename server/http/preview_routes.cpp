@@ -35,8 +35,8 @@ class LazyPreviews {
 
 codec::Problem not_found(const std::string& what) { return codec::Problem(404, "Not found", "id", what); }
 
-// A content-addressed PNG: the same URL always names the same bytes.
-HttpResponse png(const HttpRequest& request, std::string bytes, const std::string& etag) {
+// A content-addressed image (PNG or clip): the same URL always names the same bytes.
+HttpResponse image(const HttpRequest& request, std::string bytes, const std::string& etag, std::string_view type) {
   HttpResponse r;
   r.headers.emplace_back("ETag", etag);
   r.headers.emplace_back("Cache-Control", "public, max-age=31536000, immutable");
@@ -45,9 +45,26 @@ HttpResponse png(const HttpRequest& request, std::string bytes, const std::strin
     r.content_type.clear();
     return r;
   }
-  r.content_type = "image/png";
+  r.content_type = std::string(type);
   r.body = std::move(bytes);
   return r;
+}
+
+HttpResponse png(const HttpRequest& request, std::string bytes, const std::string& etag) {
+  return image(request, std::move(bytes), etag, "image/png");
+}
+
+// GET .../animation.webp or .gif: the clip, made from the cached frames on first ask.
+Route clip_route(const std::shared_ptr<LazyPreviews>& previews, render::ClipFormat format) {
+  const std::string name = std::string(render::clip_format_name(format));
+  return {"GET", std::string(kPrefix) + "/{id}/animation." + name,
+          [previews, format, name](const HttpRequest& request, Service&) {
+            const std::string& id = request.params.at("id");
+            auto bytes = previews->started() ? previews->get().clip(id, format) : std::nullopt;
+            if (!bytes) throw not_found("no finished preview " + id);
+            return image(request, std::move(*bytes), "\"" + id + "-animation-" + name + "\"",
+                         render::clip_content_type(format));
+          }};
 }
 
 int frame_index(const std::string& text) {
@@ -91,6 +108,8 @@ std::vector<Route> preview_routes() {
          if (!bytes) throw not_found("no frame " + std::to_string(n) + " of preview " + id);
          return png(request, std::move(*bytes), "\"" + id + "-" + std::to_string(n) + "\"");
        }},
+      clip_route(previews, render::ClipFormat::webp),
+      clip_route(previews, render::ClipFormat::gif),
   };
 }
 

@@ -111,6 +111,20 @@ TEST_F(RenderCommand, WritesFramesAndFilmstrip) {
   EXPECT_FALSE(std::filesystem::exists(dir / "frame_0005.png"));
 }
 
+TEST_F(RenderCommand, AnimationFlagWritesTheClip) {
+  std::string out, err;
+  ASSERT_EQ(run({"--preset", "oscillator", "--frames", "3", "--size", "64x36", "--out", dir.string(), "--animation",
+                 "gif"}, &out), 0);
+  const auto doc = nlohmann::json::parse(out);
+  EXPECT_EQ(doc["animation"], (dir / "animation.gif").string());
+  std::ifstream in(dir / "animation.gif", std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  EXPECT_EQ(bytes.str().compare(0, 6, "GIF89a"), 0);
+  EXPECT_EQ(run({"--preset", "oscillator", "--out", dir.string(), "--animation", "mp4"}, nullptr, &err), 2);
+  EXPECT_NE(err.find("--animation"), std::string::npos);
+}
+
 TEST_F(RenderCommand, SameMotionSameIdWhicheverWayItIsAsked) {
   // 30 frames per period on a 60 Hz basis is 2 Hz: the same physics, so the same content hash.
   std::string a, b, c;

@@ -107,6 +107,32 @@ TEST(PreviewRoutes, OscillatorFramesAreServedWithCachingHeaders) {
   EXPECT_EQ(c.Get("/api/v1/preview/nosuchid/0.png")->status, 404);
 }
 
+// Clips of a finished preview: made on first ask, cached, content-addressed like the PNGs.
+TEST(PreviewRoutes, ClipsAreServedAsWebpAndGif) {
+  TestServer server(softtune::http::testing::quick_options(), presets_config());
+  auto c = server.client();
+  int status = 0;
+  const json answer = post_preview(c, {{"preset", "mouse"}, {"frames", 6}, {"size", "64x36"}}, status);
+  ASSERT_EQ(status, 200) << answer.dump();
+  EXPECT_EQ(softtune::http::testing::conformance_error("/api/v1/preview", "post", 200, "application/json", answer), "");
+  const std::string webp_url = answer["animation"]["webp"], gif_url = answer["animation"]["gif"];
+  EXPECT_EQ(webp_url, "/api/v1/preview/" + answer["id"].get<std::string>() + "/animation.webp");
+  auto webp = c.Get(webp_url.c_str());
+  ASSERT_EQ(webp->status, 200);
+  EXPECT_EQ(webp->get_header_value("Content-Type"), "image/webp");
+  EXPECT_EQ(webp->body.compare(0, 4, "RIFF"), 0);
+  EXPECT_EQ(webp->body.compare(8, 4, "WEBP"), 0);
+  const std::string etag = webp->get_header_value("ETag");
+  EXPECT_EQ(c.Get(webp_url.c_str(), {{"If-None-Match", etag}})->status, 304);
+  EXPECT_EQ(c.Get(webp_url.c_str())->body, webp->body);  // from the clip cache: the same bytes
+  auto gif = c.Get(gif_url.c_str());
+  ASSERT_EQ(gif->status, 200);
+  EXPECT_EQ(gif->get_header_value("Content-Type"), "image/gif");
+  EXPECT_EQ(gif->body.compare(0, 6, "GIF89a"), 0);
+  EXPECT_EQ(c.Get("/api/v1/preview/nosuchid/animation.webp")->status, 404);
+  EXPECT_EQ(c.Get("/api/v1/preview/nosuchid/animation.gif")->status, 404);
+}
+
 TEST(PreviewRoutes, SceneFramesRunTheBox2DScene) {
   unsetenv("SOFTTUNE_PRESETS");  // the presets come from the server's configuration alone
   TestServer server(softtune::http::testing::quick_options(), presets_config());

@@ -133,8 +133,9 @@ TEST(OscillatorFrames, DrawModelPlacesBlocksSpringsAndGhosts) {
   EXPECT_DOUBLE_EQ(f.springs[0].b_m.x, s.rest_length_m + 0.3 - 0.5 * kOscillatorBlockSize);
   EXPECT_DOUBLE_EQ(f.springs[0].rest_length_m, s.rest_length_m - 0.5 * kOscillatorBlockSize);
   EXPECT_TRUE(f.springs[1].ghost);
-  EXPECT_NE(f.caption.find("FRAME 15/60"), std::string::npos);
-  EXPECT_NE(f.caption.find("ERROR +0.100 M"), std::string::npos);
+  EXPECT_NE(f.caption.find("frame 15/60"), std::string::npos);
+  ASSERT_EQ(f.legend.size(), 2u);
+  EXPECT_NE(f.legend[1].find("error +0.100 m"), std::string::npos);
 }
 
 TEST(OscillatorFrames, RenderedBlocksSitAtTheirProjectedPositions) {

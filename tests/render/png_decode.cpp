@@ -1,25 +1,15 @@
 #include "png_decode.h"
 
-#include <png.h>
-
-#include <stdexcept>
+#include "softtune/render/png.h"
 
 namespace softtune::render::test {
 
 Decoded decode_png(const std::string& png) {
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_memory(&image, png.data(), png.size())) {
-    throw std::runtime_error(std::string("not a PNG: ") + image.message);
-  }
-  image.format = PNG_FORMAT_RGBA;
   Decoded d;
-  d.width = static_cast<int>(image.width);
-  d.height = static_cast<int>(image.height);
-  d.rgba.resize(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, d.rgba.data(), 0, nullptr)) {
-    throw std::runtime_error(std::string("PNG decode failed: ") + image.message);
-  }
+  ImageSize size;
+  d.rgba = render::decode_png(png, size);
+  d.width = size.width;
+  d.height = size.height;
   return d;
 }
 

@@ -39,14 +39,40 @@ struct CircleShape {
   Role role = Role::dynamic_body;
 };
 
-/// A soft joint drawn as a zig-zag spring from `a_m` to `b_m`. Its colour shows the stretch ratio
-/// current / rest: red when stretched, blue when compressed, grey at rest (palette.h).
+/// How a joint between two points looks.
+enum class SpringStyle : std::uint8_t {
+  coil,  ///< a soft distance or wheel joint: a zig-zag coloured by stretch
+  rod,   ///< a rigid distance joint: a straight bar
+  link,  ///< a mouse joint's soft link from its target to the body: a zig-zag in the link colour
+};
+
+/// A joint drawn from `a_m` to `b_m` (a zig-zag spring unless `style` says otherwise). A coil's colour
+/// shows the stretch ratio current / rest: red when stretched, blue when compressed, grey at rest
+/// (palette.h).
 struct SpringShape {
   Vec2 a_m;
   Vec2 b_m;
   double rest_length_m = 1.0;                ///< m; 0 means "no rest length" (drawn neutral)
   std::optional<double> current_length_m;    ///< m; the anchor distance |b - a| when empty
   bool ghost = false;                        ///< the analytic spring: translucent
+  SpringStyle style = SpringStyle::coil;
+};
+
+/// A rigid pin: a revolute joint (a ring) or a weld (a square), at its world anchor.
+struct PinShape {
+  Vec2 at_m;
+  bool weld = false;
+  bool ghost = false;
+};
+
+/// A mouse joint's target: a cross-hair the body is pulled to.
+struct TargetShape {
+  Vec2 at_m;
+};
+
+/// The recent path of a probed point, oldest first; drawn fading in from the oldest point.
+struct Trail {
+  std::vector<Vec2> points_m;
 };
 
 /// A joint anchor.
@@ -55,23 +81,29 @@ struct AnchorDot {
   bool ghost = false;
 };
 
-/// A short text at a world position (its lower-left corner). The built-in font has A-Z, 0-9 and
-/// . , : = - + / ( ) % _ ' ; lower case is shown as upper case.
+/// A short text at a world position (its lower-left corner, or the middle of its bottom when
+/// `centred`), UTF-8.
 struct Label {
   std::string text;
   Vec2 at_m;
+  bool centred = false;
 };
 
-/// One frame of a scene. Drawn back to front: grid, ground, polygons and circles in order, springs,
-/// anchors, labels, caption.
+/// One frame of a scene. Drawn back to front: grid, ground, trails, polygons and circles in order,
+/// springs, pins, targets, anchors, labels, caption.
 struct DrawFrame {
   std::vector<PolygonShape> polygons;
   std::vector<CircleShape> circles;
   std::vector<SpringShape> springs;
+  std::vector<PinShape> pins;
+  std::vector<TargetShape> targets;
+  std::vector<Trail> trails;
   std::vector<AnchorDot> anchors;
   std::vector<Label> labels;
   std::optional<double> ground_y_m;  ///< m; a ground line with earth below when set
-  std::string caption;               ///< top-left text in screen space (time, frame, error)
+  std::string caption;               ///< title band, top-left: what and when (name, time, frame); UTF-8
+  std::string settings;              ///< title band, top-right: mode, fps, substeps (the grid step is added)
+  std::vector<std::string> legend;   ///< title band, under the caption: asked against measured, per joint
 };
 
 /// Where the camera looks. Fixed (from a preset) or fitted to the bounds of every frame of a run.
@@ -90,7 +122,8 @@ struct Bounds {
   void add(const Bounds& b);
 };
 
-/// Bounds of every shape, spring and anchor of a frame, and the ground height (labels excluded).
+/// Bounds of every shape, spring, pin, target, trail and anchor of a frame, and the ground height
+/// (labels excluded).
 Bounds bounds_of(const DrawFrame& frame);
 
 }  // namespace softtune::render

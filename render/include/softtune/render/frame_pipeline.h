@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "softtune/diagnostics.h"
+#include "softtune/render/camera_path.h"
 #include "softtune/render/draw_model.h"
 #include "softtune/render/filmstrip.h"
 #include "softtune/render/png.h"
@@ -47,14 +48,18 @@ struct PreviewSettings {
 /// The first broken cap, naming the request field ("frames", "size", "filmstrip_every"), or nothing.
 std::optional<FieldError> validate_preview_settings(const PreviewSettings& settings);
 
-/// What a caller hands the pipeline: one draw model per frame and the camera for all of them (an
-/// auto-fit camera is fitted once to the bounds of every frame, so the view does not jump).
+/// What a caller hands the pipeline: one draw model per frame and how the camera moves (camera_path.h:
+/// a fixed camera; an auto-fit one fitted once to the action of every frame, so the view does not jump;
+/// or, with `follow` boxes, one that follows them).
 struct FrameSet {
   Camera camera;
+  Follow follow;
   std::vector<DrawFrame> frames;
+  /// s of each frame in the run (for a clip's frame timing); empty: 1/60 s apart.
+  std::vector<double> times_s;
 };
 
-/// The one camera for a run: `set.camera` if fixed, else fitted to the bounds of every frame.
+/// The first frame's camera of a run (run_cameras).
 Camera run_camera(const FrameSet& set, ImageSize size);
 
 struct PreviewTimings {
@@ -73,6 +78,7 @@ struct Preview {
   FilmstripLayout filmstrip;
   std::vector<std::string> frames_png;
   std::string filmstrip_png;
+  std::vector<double> frame_times_s;  ///< s, each frame's time in the run (FrameSet::times_s)
   PreviewTimings timings;
   StageList stages;  ///< render, png_encode
   std::size_t bytes() const;

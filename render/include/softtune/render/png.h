@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "softtune/render/view.h"
 
@@ -21,5 +23,9 @@ struct PngOptions {
 /// Encodes straight RGBA pixels (row 0 at the top) as an 8-bit RGB PNG; the bytes are returned in a
 /// string. Throws std::runtime_error if libpng fails.
 std::string encode_png(std::span<const std::uint8_t> rgba, ImageSize size, PngOptions options = {});
+
+/// Decodes a PNG into straight RGBA (row 0 at the top) and its size: a clip is made from the cached
+/// frames. Throws std::runtime_error when `png` is not a PNG.
+std::vector<std::uint8_t> decode_png(std::string_view png, ImageSize& size);
 
 }  // namespace softtune::render

@@ -4,10 +4,12 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "softtune/render/draw_model.h"
 #include "softtune/render/palette.h"
+#include "softtune/render/text.h"
 #include "softtune/render/view.h"
 
 namespace softtune::render {
@@ -31,7 +33,7 @@ struct StrokeSizes {
   double spring_px;
   double ground_px;
   double anchor_radius_px;
-  int text_dot_px;  ///< one font dot, whole pixels so glyphs stay crisp
+  int text_px;      ///< em size of the band's text
   double grid_min_spacing_px;
 };
 StrokeSizes stroke_sizes(ImageSize size);
@@ -44,8 +46,23 @@ double grid_step_m(double pixels_per_m, double min_spacing_px);
 /// multisampled target).
 void tessellate(const DrawFrame& frame, const View& view, bool fringe_aa, Mesh& out);
 
-/// The frame's text (labels, caption, grid step), drawn last on the read-back pixels: bitmap text costs
-/// a few thousand pixel writes on the CPU but two triangles per font dot on llvmpipe.
+/// One text of the overlay, where it goes.
+struct PlacedText {
+  std::string text;
+  int x = 0, y = 0;  ///< px, top-left
+  int px = 12;       ///< em size
+  TextBox box;       ///< what it covers
+  bool in_band = true;  ///< false for labels placed in the world
+};
+
+/// Where the frame's text goes: the caption at the band's top-left, the settings and grid step at its
+/// top-right, the legend under the caption in two columns (entries beyond the band's room summed up as
+/// "+N more"), all shrunk until they fit the band's width; labels at their world positions. The title
+/// band is the top kCaptionBand of the image.
+std::vector<PlacedText> layout_text_overlay(const DrawFrame& frame, const View& view);
+
+/// The frame's text (layout_text_overlay), drawn last on the read-back pixels: FreeType glyphs cost a
+/// few thousand pixel writes on the CPU, where as triangles they would cost llvmpipe more than the scene.
 void draw_text_overlay(const DrawFrame& frame, const View& view, std::span<std::uint8_t> rgba);
 
 }  // namespace softtune::render

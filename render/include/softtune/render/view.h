@@ -24,8 +24,9 @@ inline bool is_rgba_of(ImageSize size, std::size_t bytes) {
   return size.width > 0 && size.height > 0 && bytes == rgba_bytes(size);
 }
 
-/// Fraction of the image height kept free at the top for the caption when a camera is fitted.
-inline constexpr double kCaptionBand = 0.16;
+/// Fraction of the image height kept free at the top for the caption and legend (the title band) when a
+/// camera is fitted: four lines of text at 360 px.
+inline constexpr double kCaptionBand = 0.2;
 
 /// A fixed camera that shows `bounds` with `margin` (fraction of the larger side) on every side and
 /// the caption band free above, at the image's aspect ratio; at least `min_width_m` wide so a point

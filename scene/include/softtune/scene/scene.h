@@ -154,8 +154,10 @@ struct WorldSettings {
 };
 
 struct CameraSettings {
-  Eigen::Vector2d center{0, 0};            ///< m
-  double width_m = 20.0;                   ///< m of world across the picture
+  Eigen::Vector2d center{0, 0};            ///< m, when `fit` is false
+  double width_m = 20.0;                   ///< m of world across the picture: fixed, or followed (at least)
+  bool fit = true;                         ///< previews: frame the action over the whole run (or `follow`)
+  std::string follow;                      ///< body id the preview camera follows; empty: none
 };
 
 struct Scene {

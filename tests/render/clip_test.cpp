@@ -1,0 +1,187 @@
+// Clips (render/src/clip.cpp, clip_webp.cpp, clip_gif.cpp): decoded back with libwebp's own demuxer
+// (WebPAnimDecoder) and giflib's reader, they hold the right frame count, size, timing and pixels.
+#include "softtune/render/clip.h"
+
+#include <gif_lib.h>
+#include <gtest/gtest.h>
+#include <webp/demux.h>
+
+#include <cstring>
+
+#include "softtune/render/png.h"
+
+namespace softtune::render {
+namespace {
+
+// Frame k: a grey background with a black square at x = 4 k (so every frame differs).
+std::vector<std::string> moving_square(int frames, ImageSize size) {
+  std::vector<std::string> out;
+  for (int k = 0; k < frames; ++k) {
+    std::vector<std::uint8_t> rgba(rgba_bytes(size), 246);
+    for (int y = 10; y < 30; ++y) {
+      for (int x = 4 * k; x < 4 * k + 20 && x < size.width; ++x) {
+        std::uint8_t* p = &rgba[(static_cast<std::size_t>(y) * size.width + x) * 4];
+        p[0] = p[1] = p[2] = 20;
+      }
+    }
+    for (std::size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
+    out.push_back(encode_png(rgba, size));
+  }
+  return out;
+}
+
+struct WebpFrames {
+  int width = 0, height = 0, loop = -1;
+  std::vector<int> end_ms;  // WebPAnimDecoder's timestamps: when each frame ends
+  std::vector<std::vector<std::uint8_t>> rgba;
+};
+
+WebpFrames decode_webp(const std::string& bytes) {
+  WebPData data{reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()};
+  WebPAnimDecoderOptions options;
+  WebPAnimDecoderOptionsInit(&options);
+  options.color_mode = MODE_RGBA;
+  WebPAnimDecoder* dec = WebPAnimDecoderNew(&data, &options);
+  EXPECT_NE(dec, nullptr);
+  WebpFrames out;
+  if (!dec) return out;
+  WebPAnimInfo info;
+  WebPAnimDecoderGetInfo(dec, &info);
+  out.width = static_cast<int>(info.canvas_width);
+  out.height = static_cast<int>(info.canvas_height);
+  out.loop = static_cast<int>(info.loop_count);
+  while (WebPAnimDecoderHasMoreFrames(dec)) {
+    std::uint8_t* px = nullptr;
+    int ts = 0;
+    if (!WebPAnimDecoderGetNext(dec, &px, &ts)) break;
+    out.end_ms.push_back(ts);
+    out.rgba.emplace_back(px, px + static_cast<std::size_t>(out.width) * out.height * 4);
+  }
+  WebPAnimDecoderDelete(dec);
+  return out;
+}
+
+TEST(FrameDurations, FollowTheRunsTimesWithoutDrift) {
+  // 1/60 s frames: 17, 16, 17, ... ms, summing to the true 1000 ms over 60 frames.
+  std::vector<double> t;
+  for (int i = 0; i <= 60; ++i) t.push_back(i / 60.0);
+  const std::vector<int> d = frame_durations_ms(t);
+  int sum = 0;
+  for (std::size_t i = 0; i + 1 < d.size(); ++i) {
+    EXPECT_TRUE(d[i] == 16 || d[i] == 17) << i;
+    sum += d[i];
+  }
+  EXPECT_EQ(sum, 1000);
+  EXPECT_EQ(d.back(), d[d.size() - 2]);
+  EXPECT_EQ(frame_durations_ms({0.0, 0.0, 0.5}), (std::vector<int>{1, 499, 499}));
+}
+
+TEST(Clip, WebpDecodesToTheFramesWithTheirTiming) {
+  const ImageSize size{96, 40};
+  const auto frames = moving_square(12, size);
+  std::vector<double> t;
+  for (int i = 0; i < 12; ++i) t.push_back(0.1 * i);  // a scene snapshotted every 6 frames at 60 fps
+  const std::string webp = encode_clip(ClipFormat::webp, frames, t);
+  ASSERT_EQ(webp.compare(0, 4, "RIFF"), 0);
+  const WebpFrames got = decode_webp(webp);
+  EXPECT_EQ(got.width, 96);
+  EXPECT_EQ(got.height, 40);
+  EXPECT_EQ(got.loop, 0);
+  ASSERT_EQ(got.end_ms.size(), 12u);
+  for (int i = 0; i < 12; ++i) EXPECT_EQ(got.end_ms[i], 100 * (i + 1)) << i;
+  // Lossless: every pixel comes back as it went in.
+  for (int i : {0, 5, 11}) {
+    ImageSize s;
+    EXPECT_EQ(got.rgba[i], decode_png(frames[i], s)) << "frame " << i;
+  }
+}
+
+TEST(Clip, GifDecodesToTheFramesWithCentisecondDelays) {
+  const ImageSize size{96, 40};
+  const auto frames = moving_square(10, size);
+  std::vector<double> t;
+  for (int i = 0; i < 10; ++i) t.push_back(0.1 * i);
+  const std::string gif = encode_clip(ClipFormat::gif, frames, t);
+  ASSERT_EQ(gif.compare(0, 6, "GIF89a"), 0);
+  struct Reader {
+    const std::string* bytes;
+    std::size_t at = 0;
+  } reader{&gif};
+  int error = 0;
+  GifFileType* g = DGifOpen(&reader, [](GifFileType* f, GifByteType* buf, int n) {
+    auto* r = static_cast<Reader*>(f->UserData);
+    const int take = static_cast<int>(std::min<std::size_t>(n, r->bytes->size() - r->at));
+    std::memcpy(buf, r->bytes->data() + r->at, take);
+    r->at += take;
+    return take;
+  }, &error);
+  ASSERT_NE(g, nullptr);
+  ASSERT_EQ(DGifSlurp(g), GIF_OK);
+  EXPECT_EQ(g->SWidth, 96);
+  EXPECT_EQ(g->SHeight, 40);
+  ASSERT_EQ(g->ImageCount, 10);
+  for (int i = 0; i < g->ImageCount; ++i) {
+    GraphicsControlBlock gcb;
+    ASSERT_EQ(DGifSavedExtensionToGCB(g, i, &gcb), GIF_OK);
+    EXPECT_EQ(gcb.DelayTime, 10) << i;
+  }
+  // The square's pixels map to the palette's dark text colour, the background to the background.
+  const GifColorType dark = g->SColorMap->Colors[g->SavedImages[3].RasterBits[20 * 96 + 14]];
+  const GifColorType light = g->SColorMap->Colors[g->SavedImages[3].RasterBits[20 * 96 + 60]];
+  EXPECT_LT(dark.Red, 40);
+  EXPECT_EQ(light.Red, 246);
+  DGifCloseFile(g, &error);
+}
+
+TEST(Clip, GifMergesFramesUnderTwoCentiseconds) {
+  // 60 fps frames (1.67 cs) would be slowed to 10 cs by browsers. Frame starts round to 0, 2, 3, 5, 7, 8,
+  // 10, 12, 13, 15, 17, 18 cs; a frame is kept once 2 cs have passed since the last kept one (0, 2, 5, 7,
+  // 10, 12, 15, 17), each lasting 2 or 3 cs, and the clip still lasts the run's 0.2 s.
+  const auto frames = moving_square(12, {64, 40});
+  std::vector<double> t;
+  for (int i = 0; i < 12; ++i) t.push_back(i / 60.0);
+  const std::string gif = encode_clip(ClipFormat::gif, frames, t);
+  struct Reader {
+    const std::string* bytes;
+    std::size_t at = 0;
+  } reader{&gif};
+  int error = 0;
+  GifFileType* g = DGifOpen(&reader, [](GifFileType* f, GifByteType* buf, int n) {
+    auto* r = static_cast<Reader*>(f->UserData);
+    const int take = static_cast<int>(std::min<std::size_t>(n, r->bytes->size() - r->at));
+    std::memcpy(buf, r->bytes->data() + r->at, take);
+    r->at += take;
+    return take;
+  }, &error);
+  ASSERT_NE(g, nullptr);
+  ASSERT_EQ(DGifSlurp(g), GIF_OK);
+  EXPECT_EQ(g->ImageCount, 8);
+  int total = 0;
+  for (int i = 0; i < g->ImageCount; ++i) {
+    GraphicsControlBlock gcb;
+    DGifSavedExtensionToGCB(g, i, &gcb);
+    EXPECT_EQ(gcb.DelayTime, i % 2 == 0 ? 2 : 3) << i;
+    total += gcb.DelayTime;
+  }
+  EXPECT_EQ(total, 20);  // 12 frames of 1/60 s = 0.2 s
+  DGifCloseFile(g, &error);
+}
+
+TEST(Clip, CapsAndBadInput) {
+  EXPECT_FALSE(validate_clip(120, {1280, 720}));
+  const auto e = validate_clip(121, {1280, 720});
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->field, "frames");
+  EXPECT_TRUE(validate_clip(0, {640, 360}));
+  EXPECT_THROW(encode_clip(ClipFormat::webp, {}, {}), std::invalid_argument);
+  auto frames = moving_square(2, {32, 32});
+  frames.push_back(moving_square(1, {48, 32}).front());
+  EXPECT_THROW(encode_clip(ClipFormat::gif, frames, {0.0, 0.1, 0.2}), std::invalid_argument);
+  EXPECT_THROW(encode_clip(ClipFormat::webp, moving_square(2, {32, 32}), {0.0}), std::invalid_argument);
+  EXPECT_EQ(clip_format("webp"), ClipFormat::webp);
+  EXPECT_EQ(clip_format("gif"), ClipFormat::gif);
+  EXPECT_FALSE(clip_format("mp4"));
+}
+
+}  // namespace
+}  // namespace softtune::render
