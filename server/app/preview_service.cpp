@@ -1,5 +1,6 @@
 #include "app/preview_service.h"
 
+#include "app/scene_cost.h"
 #include "app/simulate_app.h"
 
 #include <algorithm>
@@ -52,7 +53,9 @@ void plan_oscillator(PreviewPlan& plan, const TuneRequest& request, double initi
   };
 }
 
-void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::MassModel> mass_model) {
+// `prefix` is where the scene sits in the request ("scene." or ""), for the cost's field names.
+void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::MassModel> mass_model,
+                const std::string& prefix) {
   const scene::Scene scene = decode_scene(scene_doc);
   const int total = scene::frame_count(scene.world);
   if (total + 1 < plan.settings.frames) {
@@ -66,6 +69,9 @@ void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::M
   options.record_frames = true;
   options.frame_stride = plan.settings.frames > 1 ? std::max(1, total / (plan.settings.frames - 1)) : 1;
   options.mass_model = mass_model;
+  // The run happens on the render pool, which draws one preview at a time: a scene over the budget would
+  // hold every preview behind it.
+  require_within_budget(scene_cost(scene, options, prefix));
   plan.canonical = "scene:" + scene_doc.dump() + "|mass_model:" +
                    (mass_model ? std::string(scene::mass_model_name(*mass_model)) : "scene") +
                    "|stride:" + std::to_string(options.frame_stride);
@@ -107,7 +113,7 @@ PreviewPlan plan_preview(const json& request, const std::string& presets_dir) {
     const json tuning = oscillator_preset_tuning(load_preset(presets_dir, "oscillator"), x0);
     plan_oscillator(plan, decode_tune_request(tuning), x0);
   } else if (r.has("preset") || r.has("scene")) {
-    plan_scene(plan, requested_scene_document(r, request, presets_dir, {}), mass_model);
+    plan_scene(plan, requested_scene_document(r, request, presets_dir, {}), mass_model, r.has("scene") ? "scene." : "");
   } else if (has_tune_fields) {
     plan_oscillator(plan, read_tune_fields(r), 0.5);
   } else {

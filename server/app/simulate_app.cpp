@@ -1,6 +1,7 @@
 #include "app/simulate_app.h"
 
 #include "app/preset_store.h"
+#include "app/scene_cost.h"
 #include "codec/json_writer.h"
 #include "codec/problem.h"
 #include "codec/scene_codec.h"
@@ -46,6 +47,7 @@ json run_simulate(const json& request, const std::string& presets_dir) {
   }
   r.finish();
   const Scene scene = decode_scene(scene_doc);
+  require_within_budget(scene_cost(scene, options, request.contains("scene") ? "scene." : ""));
   return encode_scene_result(scene, run_scene(scene, options));
 }
 
