@@ -1,6 +1,7 @@
 #include "http/service.h"
 
 #include "codec/problem.h"
+#include "http/memory_release.h"
 #include "http/router.h"
 
 namespace softtune::http {
@@ -11,7 +12,9 @@ std::string_view routing_method(std::string_view method) { return method == "HEA
 }  // namespace
 
 Service::Service(ServiceConfig config, std::vector<Route> routes)
-    : config_(std::move(config)), routes_(std::move(routes)), cache_(config_.cache_entries, config_.cache_bytes) {}
+    : config_(std::move(config)), routes_(std::move(routes)), cache_(config_.cache_entries, config_.cache_bytes) {
+  configure_allocator();
+}
 
 // Exact patterns first; when the path has routes only under other methods, nothing (405 follows); the
 // static catch-all last, so GET /api/v1/tune is "405, use POST" and not "no such file".
@@ -47,6 +50,14 @@ double Service::uptime_seconds() const {
 }
 
 HttpResponse Service::handle(HttpRequest request) {
+  const auto start = std::chrono::steady_clock::now();
+  memory_.enter();
+  HttpResponse response = dispatch(std::move(request));
+  memory_.leave(std::chrono::steady_clock::now() - start, response.body.size());
+  return response;
+}
+
+HttpResponse Service::dispatch(HttpRequest request) {
   try {
     if (const Route* r = find(request.method, request.path)) {
       request.params = *match_route(r->pattern, request.path);

@@ -13,6 +13,7 @@
 #include "app/preset_store.h"
 #include "http/http_types.h"
 #include "http/limits.h"
+#include "http/memory_release.h"
 #include "http/metrics.h"
 #include "http/response_cache.h"
 
@@ -42,6 +43,7 @@ class Service {
 
   /// Routes the request (HEAD as GET) and runs its handler. Never throws: a codec::Problem becomes its
   /// status as problem+json, any other exception a 500 problem; no route is 404, a wrong method 405.
+  /// After a large request the allocator gives its memory back (memory_release.h).
   HttpResponse handle(HttpRequest request);
 
   /// The metrics label of a request: its route's pattern, or "unmatched".
@@ -51,9 +53,11 @@ class Service {
   const std::vector<Route>& routes() const { return routes_; }
   Metrics& metrics() { return metrics_; }
   ResponseCache& response_cache() { return cache_; }
+  const MemoryRelease& memory_release() const { return memory_; }
   double uptime_seconds() const;
 
  private:
+  HttpResponse dispatch(HttpRequest request);
   const Route* find(std::string_view method, std::string_view path) const;
   /// "GET, POST": the methods of the exact (non-catch-all) routes matching `path`.
   std::string allowed_methods(std::string_view path) const;
@@ -62,6 +66,7 @@ class Service {
   std::vector<Route> routes_;
   Metrics metrics_;
   ResponseCache cache_;
+  MemoryRelease memory_;
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 };
 
