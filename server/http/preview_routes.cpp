@@ -8,6 +8,7 @@
 #include "codec/json_reader.h"
 #include "app/preview_service.h"
 #include "codec/problem.h"
+#include "http/conditional.h"
 
 namespace softtune::http {
 namespace {
@@ -40,7 +41,7 @@ HttpResponse png(const HttpRequest& request, std::string bytes, const std::strin
   HttpResponse r;
   r.headers.emplace_back("ETag", etag);
   r.headers.emplace_back("Cache-Control", "public, max-age=31536000, immutable");
-  if (request.header("If-None-Match") == etag) {
+  if (const auto tags = request.header("If-None-Match"); tags && if_none_match(*tags, etag)) {
     r.status = 304;
     r.content_type.clear();
     return r;

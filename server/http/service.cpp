@@ -1,6 +1,7 @@
 #include "http/service.h"
 
 #include "codec/problem.h"
+#include "http/cors.h"
 #include "http/memory_release.h"
 #include "http/router.h"
 
@@ -52,9 +53,21 @@ double Service::uptime_seconds() const {
 HttpResponse Service::handle(HttpRequest request) {
   const auto start = std::chrono::steady_clock::now();
   memory_.enter();
-  HttpResponse response = dispatch(std::move(request));
+  const std::optional<std::string> origin = request.header("Origin");
+  HttpResponse response = config_.cors.enabled() && is_preflight(request) ? preflight(request) : dispatch(std::move(request));
+  add_cors(origin, response);
   memory_.leave(std::chrono::steady_clock::now() - start, response.body.size());
   return response;
+}
+
+// A preflight names the path it will ask: the methods of its exact routes, or GET for a static file.
+HttpResponse Service::preflight(const HttpRequest& request) const {
+  std::string allow = allowed_methods(request.path);
+  if (allow.empty() && find("GET", request.path)) allow = "GET";
+  if (allow.empty()) {
+    return problem_response(codec::Problem(404, "Not found", "path", "no route for " + request.path));
+  }
+  return preflight_response(config_.cors, request, allow);
 }
 
 HttpResponse Service::dispatch(HttpRequest request) {

@@ -12,6 +12,7 @@
 
 #include "app/preset_store.h"
 #include "http/http_types.h"
+#include "http/cors.h"
 #include "http/limits.h"
 #include "http/memory_release.h"
 #include "http/metrics.h"
@@ -35,6 +36,7 @@ struct ServiceConfig {
   std::string presets_dir = app::resolve_presets_dir();  ///< simulate and presets: $SOFTTUNE_PRESETS, else presets/
   std::size_t cache_entries = limits::kResponseCacheEntries;  ///< 0 turns the response cache off
   std::size_t cache_bytes = limits::kResponseCacheBytes;
+  CorsPolicy cors;  ///< cross-origin answers (cors.h); off by default
 };
 
 class Service {
@@ -43,8 +45,15 @@ class Service {
 
   /// Routes the request (HEAD as GET) and runs its handler. Never throws: a codec::Problem becomes its
   /// status as problem+json, any other exception a 500 problem; no route is 404, a wrong method 405.
-  /// After a large request the allocator gives its memory back (memory_release.h).
+  /// After a large request the allocator gives its memory back (memory_release.h). With CORS on, a
+  /// preflight is answered here and every answer to an allowed Origin carries the CORS headers (cors.h).
   HttpResponse handle(HttpRequest request);
+
+  /// The CORS headers for an answer the transport writes itself (a refused head) to a request from
+  /// `origin`.
+  void add_cors(const std::optional<std::string>& origin, HttpResponse& response) const {
+    add_cors_headers(config_.cors, origin, response);
+  }
 
   /// The metrics label of a request: its route's pattern, or "unmatched".
   std::string_view route_label(std::string_view method, std::string_view path) const;
@@ -58,6 +67,7 @@ class Service {
 
  private:
   HttpResponse dispatch(HttpRequest request);
+  HttpResponse preflight(const HttpRequest& request) const;
   const Route* find(std::string_view method, std::string_view path) const;
   /// "GET, POST": the methods of the exact (non-catch-all) routes matching `path`.
   std::string allowed_methods(std::string_view path) const;
