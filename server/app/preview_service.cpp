@@ -56,7 +56,7 @@ void plan_oscillator(PreviewPlan& plan, const TuneRequest& request, double initi
 // `prefix` is where the scene sits in the request ("scene." or ""), for the cost's field names.
 void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::MassModel> mass_model,
                 const std::string& prefix) {
-  const scene::Scene scene = decode_scene(scene_doc);
+  const scene::Scene scene = decode_requested_scene(scene_doc, prefix);
   const int total = scene::frame_count(scene.world);
   if (total + 1 < plan.settings.frames) {
     plan.warnings.push_back({{"code", "frames_clamped"},

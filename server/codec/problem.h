@@ -11,7 +11,7 @@ namespace softtune::codec {
 struct Problem : std::runtime_error {
   int status;          ///< HTTP status: 400 malformed, 413 too large, 415 content type, 422 invalid value
   std::string title;   ///< short, fixed per kind
-  std::string field;   ///< dotted path of the offending field ("constraint.body_a.mass"), "" for the body
+  std::string field;   ///< dotted path of the offending field ("constraint.body_a.mass", "bodies.0.mass"; never a JSON pointer), "" for the body
   std::string detail;  ///< the rule the value broke
   /// Extension members (RFC 9457 3.2) added to the JSON beside the five above, e.g. the cost budget's
   /// "fields", "estimated_cpu_seconds" and "budget_cpu_seconds" (app/request_cost.h); an object or null.

@@ -63,7 +63,7 @@ std::vector<Method> read_methods(ObjectReader& r) {
   std::vector<Method> out;
   for (std::size_t i = 0; i < v->size(); ++i) {
     const auto m = (*v)[i].is_string() ? method_from_name((*v)[i].get<std::string>()) : std::nullopt;
-    if (!m) throw invalid_field("methods[" + std::to_string(i) + "]", rule);
+    if (!m) throw invalid_field("methods." + std::to_string(i), rule);
     out.push_back(*m);
   }
   return out;

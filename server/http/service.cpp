@@ -1,5 +1,7 @@
 #include "http/service.h"
 
+#include <algorithm>
+
 #include "codec/problem.h"
 #include "http/cors.h"
 #include "http/memory_release.h"
@@ -9,6 +11,22 @@ namespace softtune::http {
 namespace {
 
 std::string_view routing_method(std::string_view method) { return method == "HEAD" ? "GET" : method; }
+
+// A query parameter the route does not read would be ignored silently (as unknown body fields are not),
+// and a repeated one would leave which value counts to chance.
+void check_query(const Route& route, const HttpRequest& request) {
+  if (route.query.size() == 1 && route.query.front() == "*") return;
+  for (auto it = request.query.begin(); it != request.query.end(); it = request.query.upper_bound(it->first)) {
+    const std::string name = it->first.substr(0, 64);
+    if (std::find(route.query.begin(), route.query.end(), it->first) == route.query.end()) {
+      std::string known;
+      for (const std::string& q : route.query) known += (known.empty() ? "" : ", ") + q;
+      throw codec::invalid_field(name, "is not a query parameter of " + route.pattern +
+                                           (known.empty() ? " (it takes none)" : " (it takes " + known + ")"));
+    }
+    if (request.query.count(it->first) > 1) throw codec::invalid_field(name, "is given more than once; give it once");
+  }
+}
 
 }  // namespace
 
@@ -73,6 +91,7 @@ HttpResponse Service::preflight(const HttpRequest& request) const {
 HttpResponse Service::dispatch(HttpRequest request) {
   try {
     if (const Route* r = find(request.method, request.path)) {
+      check_query(*r, request);
       request.params = *match_route(r->pattern, request.path);
       HttpResponse response = r->handler(request, *this);
       response.route = r->pattern;

@@ -24,11 +24,14 @@ class Service;
 
 using Handler = std::function<HttpResponse(const HttpRequest&, Service&)>;
 
-/// One row of the route table: method ("GET", "POST"), pattern (router.h) and handler.
+/// One row of the route table: method ("GET", "POST"), pattern (router.h), handler and the query
+/// parameters it reads. Any other query parameter, or one of them given twice, is a 422 naming it
+/// before the handler runs; {"*"} takes any query (the static page).
 struct Route {
   std::string method;
   std::string pattern;
   Handler handler;
+  std::vector<std::string> query = {};
 };
 
 struct ServiceConfig {
