@@ -132,113 +132,86 @@ double probe_value(const Scene& scene, const ProbeTarget& t, Box2DScene& world, 
   }
 }
 
-}  // namespace
-
-ProbeResult measure_probe(const ProbeSettings& probe, std::vector<double> value, double fps) {
-  ProbeResult r;
-  r.id = probe.id;
-  for (std::size_t i = 0; i < value.size(); ++i) r.time_s.push_back(i / fps);
-  const int last = static_cast<int>(value.size()) - 1;
-  const int begin = std::min(last, static_cast<int>(std::ceil(probe.from_s * fps - 1e-9)));
-  const int end = probe.to_s ? std::min(last, static_cast<int>(std::floor(*probe.to_s * fps + 1e-9))) : last;
-  if (begin >= 0 && end >= begin) {
-    const std::vector<double> window(value.begin() + begin, value.begin() + end + 1);
-    for (double v : window) r.max_abs_value = std::max(r.max_abs_value, std::abs(v));
-    r.measured = fit_response(window, 1.0 / fps);
-    r.settle_frames = r.measured.settle_samples;
-  }
-  r.value = std::move(value);
-  return r;
-}
-
-SceneResult run_scene(const Scene& scene, const RunOptions& options) {
-  SceneResult r;
-  r.mass_model = options.mass_model.value_or(scene.mass_model);
-  r.stages.add(Stage::validate);
-  if (auto e = validate_scene(scene)) {
-    r.error = e;
-    return r;
-  }
+// The stages a scene will run, said before any of them starts.
+void add_planned_stages(const Scene& scene, SceneResult& r) {
   r.stages.add(Stage::scene_setup);
-  r.frames = frame_count(scene.world);
-  r.h = step_size(scene.world.fps, scene.world.substeps);
   const bool tuned_joint = std::any_of(scene.joints.begin(), scene.joints.end(), [](const auto& j) { return j.tuning.has_value(); });
   if (tuned_joint || !scene.oscillators.empty()) {
     r.stages.add(Stage::designer_mapping);
     if (tuned_joint) r.stages.add(Stage::effective_mass);
     r.stages.add(Stage::softness);
   }
+}
 
-  // The Box2D world exists only for scenes with bodies: the 1-D oscillator never creates one.
-  std::unique_ptr<Box2DScene> world;
-  if (!scene.bodies.empty()) {
-    r.stages.add(Stage::box2d_world);
-    world = std::make_unique<Box2DScene>(scene, r.mass_model);
-    if (world->error()) {
-      r.error = world->error();
-      return r;
-    }
-    r.joints = world->tunings();
-  }
-
-  if (!scene.oscillators.empty()) {
-    r.stages.add(Stage::core_integrator);
-    r.oscillators.resize(scene.oscillators.size());
-    for (std::size_t i = 0; i < scene.oscillators.size(); ++i) {
-      if (auto e = run_oscillator(scene, scene.oscillators[i], r.joints, "oscillators." + std::to_string(i), r.oscillators[i])) {
-        r.error = e;
-        return r;
-      }
+// Every 1-D oscillator of the scene on its core integrator; false (r.error set) when one is refused.
+bool run_oscillators(const Scene& scene, SceneResult& r) {
+  r.stages.add(Stage::core_integrator);
+  r.oscillators.resize(scene.oscillators.size());
+  for (std::size_t i = 0; i < scene.oscillators.size(); ++i) {
+    if (auto e = run_oscillator(scene, scene.oscillators[i], r.joints, "oscillators." + std::to_string(i), r.oscillators[i])) {
+      r.error = e;
+      return false;
     }
   }
+  return true;
+}
 
-  // Box2D probes are sampled at t = 0 and after every frame.
-  std::vector<std::vector<double>> samples(scene.probes.size());
-  if (world) {
-    r.stages.add(Stage::box2d_step);
-    if (options.record_frames) r.stages.add(Stage::snapshots);
-    std::vector<b2Vec2> centers;
-    std::vector<float> angles;
-    for (const b2Body* b : world->bodies()) {
-      centers.push_back(b->GetWorldCenter());
-      angles.push_back(b->GetAngle());
+// The Box2D probes' targets, resolved once; oscillator probes are read from their runs instead.
+std::vector<ProbeTarget> resolve_probe_targets(const Scene& scene) {
+  std::vector<ProbeTarget> targets;
+  for (const ProbeSettings& probe : scene.probes) {
+    if (probe.kind == ProbeKind::oscillator) continue;
+    ProbeTarget t{&probe};
+    if (probe.kind == ProbeKind::displacement || probe.kind == ProbeKind::angle) {
+      t.body = find(scene.bodies, probe.body);
+      t.axis = probe.axis.normalized();
+    } else {
+      t.joint = find(scene.joints, probe.joint);
     }
-    std::vector<ProbeTarget> targets;
-    for (std::size_t p = 0; p < scene.probes.size(); ++p) {
-      const ProbeSettings& probe = scene.probes[p];
-      if (probe.kind == ProbeKind::oscillator) continue;
-      ProbeTarget t{&probe};
-      if (probe.kind == ProbeKind::displacement || probe.kind == ProbeKind::angle) {
-        t.body = find(scene.bodies, probe.body);
-        t.axis = probe.axis.normalized();
-      } else {
-        t.joint = find(scene.joints, probe.joint);
-      }
-      targets.push_back(t);
-      samples[p].reserve(r.frames + 1);
-    }
-    std::vector<bool> left(scene.bodies.size(), false);
-    const Eigen::Vector4d& bounds = scene.world.bounds;
-    const int stride = std::max(1, options.frame_stride);
-    for (int f = 0; f <= r.frames; ++f) {
-      if (f > 0) world->step_frame(f - 1);
-      for (const b2Body* b : world->bodies()) r.finite = r.finite && body_finite(b);
-      if (!r.finite) break;  // a NaN never reaches a probe series
-      for (const ProbeTarget& t : targets) samples[t.probe - scene.probes.data()].push_back(probe_value(scene, t, *world, centers, angles));
-      for (std::size_t j = 0; j < scene.joints.size(); ++j) {
-        r.max_constraint_error = std::max(r.max_constraint_error, joint_error(scene.joints[j], world->joints()[j]));
-      }
-      for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
-        const b2Vec2 p = world->bodies()[b]->GetPosition();
-        if (!left[b] && (p.x < bounds[0] || p.y < bounds[1] || p.x > bounds[2] || p.y > bounds[3])) {
-          left[b] = true;
-          r.left_world.push_back(scene.bodies[b].id);
-        }
-      }
-      if (options.record_frames && f % stride == 0) r.snapshots.push_back(snapshot(scene, *world, f));
-    }
+    targets.push_back(t);
   }
+  return targets;
+}
 
+// Steps the Box2D world frame by frame, sampling the probes at t = 0 and after every frame (into
+// `samples`, indexed like scene.probes), and watching for NaN, bodies leaving the world and the largest
+// constraint error; records snapshots when asked.
+void step_world(const Scene& scene, const RunOptions& options, Box2DScene& world, std::vector<std::vector<double>>& samples,
+                SceneResult& r) {
+  r.stages.add(Stage::box2d_step);
+  if (options.record_frames) r.stages.add(Stage::snapshots);
+  std::vector<b2Vec2> centers;
+  std::vector<float> angles;
+  for (const b2Body* b : world.bodies()) {
+    centers.push_back(b->GetWorldCenter());
+    angles.push_back(b->GetAngle());
+  }
+  const std::vector<ProbeTarget> targets = resolve_probe_targets(scene);
+  for (const ProbeTarget& t : targets) samples[t.probe - scene.probes.data()].reserve(r.frames + 1);
+  std::vector<bool> left(scene.bodies.size(), false);
+  const Eigen::Vector4d& bounds = scene.world.bounds;
+  const int stride = std::max(1, options.frame_stride);
+  for (int f = 0; f <= r.frames; ++f) {
+    if (f > 0) world.step_frame(f - 1);
+    for (const b2Body* b : world.bodies()) r.finite = r.finite && body_finite(b);
+    if (!r.finite) break;  // a NaN never reaches a probe series
+    for (const ProbeTarget& t : targets) samples[t.probe - scene.probes.data()].push_back(probe_value(scene, t, world, centers, angles));
+    for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+      r.max_constraint_error = std::max(r.max_constraint_error, joint_error(scene.joints[j], world.joints()[j]));
+    }
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+      const b2Vec2 p = world.bodies()[b]->GetPosition();
+      if (!left[b] && (p.x < bounds[0] || p.y < bounds[1] || p.x > bounds[2] || p.y > bounds[3])) {
+        left[b] = true;
+        r.left_world.push_back(scene.bodies[b].id);
+      }
+    }
+    if (options.record_frames && f % stride == 0) r.snapshots.push_back(snapshot(scene, world, f));
+  }
+}
+
+// Each probe's series fitted (Prony) and set against what was asked of it and what was predicted.
+void fit_probes(const Scene& scene, std::vector<std::vector<double>>& samples, SceneResult& r) {
   r.stages.add(Stage::response_fit);
   for (std::size_t p = 0; p < scene.probes.size(); ++p) {
     const ProbeSettings& probe = scene.probes[p];
@@ -268,6 +241,55 @@ SceneResult run_scene(const Scene& scene, const RunOptions& options) {
     if (zeta_req && pr.measured.damping_ratio) pr.damping_ratio_error = *pr.measured.damping_ratio - *zeta_req;
     r.probes.push_back(std::move(pr));
   }
+}
+
+}  // namespace
+
+ProbeResult measure_probe(const ProbeSettings& probe, std::vector<double> value, double fps) {
+  ProbeResult r;
+  r.id = probe.id;
+  for (std::size_t i = 0; i < value.size(); ++i) r.time_s.push_back(i / fps);
+  const int last = static_cast<int>(value.size()) - 1;
+  const int begin = std::min(last, static_cast<int>(std::ceil(probe.from_s * fps - 1e-9)));
+  const int end = probe.to_s ? std::min(last, static_cast<int>(std::floor(*probe.to_s * fps + 1e-9))) : last;
+  if (begin >= 0 && end >= begin) {
+    const std::vector<double> window(value.begin() + begin, value.begin() + end + 1);
+    for (double v : window) r.max_abs_value = std::max(r.max_abs_value, std::abs(v));
+    r.measured = fit_response(window, 1.0 / fps);
+    r.settle_frames = r.measured.settle_samples;
+  }
+  r.value = std::move(value);
+  return r;
+}
+
+SceneResult run_scene(const Scene& scene, const RunOptions& options) {
+  SceneResult r;
+  r.mass_model = options.mass_model.value_or(scene.mass_model);
+  r.stages.add(Stage::validate);
+  if (auto e = validate_scene(scene)) {
+    r.error = e;
+    return r;
+  }
+  add_planned_stages(scene, r);
+  r.frames = frame_count(scene.world);
+  r.h = step_size(scene.world.fps, scene.world.substeps);
+
+  // The Box2D world exists only for scenes with bodies: the 1-D oscillator never creates one.
+  std::unique_ptr<Box2DScene> world;
+  if (!scene.bodies.empty()) {
+    r.stages.add(Stage::box2d_world);
+    world = std::make_unique<Box2DScene>(scene, r.mass_model);
+    if (world->error()) {
+      r.error = world->error();
+      return r;
+    }
+    r.joints = world->tunings();
+  }
+  if (!scene.oscillators.empty() && !run_oscillators(scene, r)) return r;
+
+  std::vector<std::vector<double>> samples(scene.probes.size());
+  if (world) step_world(scene, options, *world, samples, r);
+  fit_probes(scene, samples, r);
   return r;
 }
 
