@@ -12,6 +12,7 @@ TEST(AccuracyCost, DefaultReportFitsALongRepeatedOneDoesNot) {
   EXPECT_LT(fits.cpu_seconds, softtune::app::budgets::kCpuSeconds);
   nlohmann::json heavy = base;
   heavy["step_rates"] = {10000, 20000};
+  heavy["soft_substeps"] = {1};
   heavy["duration_s"] = 50;
   heavy["timing_repeats"] = 51;
   const auto over = softtune::app::accuracy_cost(decode_accuracy_request(heavy), true, false);

@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "app/budgets.h"
 #include "app/accuracy_app.h"
 #include "app/verify_app.h"
 #include "app/stability_app.h"
@@ -125,7 +126,9 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["stability_max_grid_entries"], softtune::codec::kMaxGridEntries);
   EXPECT_EQ(x["stability_max_cases"], softtune::codec::kMaxCases);
   EXPECT_EQ(x["stability_max_observe_steps"], softtune::codec::kMaxObserveSteps);
-  EXPECT_EQ(x.size(), 30u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x["request_budget_cpu_s"], softtune::app::budgets::kCpuSeconds);
+  EXPECT_EQ(x["request_budget_peak_bytes"], softtune::app::budgets::kPeakBytes);
+  EXPECT_EQ(x.size(), 32u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {

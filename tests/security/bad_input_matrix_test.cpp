@@ -185,9 +185,6 @@ TEST_F(BadInputMatrix, EveryDocumentedParameterRefusesHostileValuesNamingIt) {
   std::printf("bad-input matrix: %zu parameter cases\n", ran);
 }
 
-}  // namespace
-}  // namespace softtune::security
-
 // Issue 17's hostile requests, each with the answer the API owes it: requests over the cost budget (422
 // naming the fields that drive the cost), conditional GETs (RFC 9110 13.1.2), query parameters that are
 // unknown or repeated, numbers that overflow a double, preview ids and frame numbers that are not in
@@ -207,7 +204,7 @@ TEST_F(BadInputMatrix, CostQueryConditionalAndIdCasesEndAsTheRfcAndTheBudgetAsk)
       {"POST", "/api/v1/stability", R"({"observe_steps": 100000, "chain": false, "include_cases": false})", 422, "observe_steps"},
       {"POST", "/api/v1/stability", R"({"chain": {"iterations": [256, 255, 254, 253, 252, 251, 250, 249, 248, 247]}})", 422, "chain.iterations"},
       {"POST", "/api/v1/accuracy", R"({"frequency_hz": 1, "oscillation": "some", "effective_mass": 1, "step_rates": [10000, 20000],
-                                     "duration_s": 50, "timing_repeats": 51})", 422, "*"},
+                                     "soft_substeps": [1], "duration_s": 50, "timing_repeats": 51})", 422, "*"},
       {"POST", "/api/v1/verify", R"({"frequency_hz": 2, "damping_ratio": 0.1, "effective_mass": 1, "fps": 4000,
                                    "engines": ["box2d_v2_4", "ode", "bullet", "mujoco"], "duration_s": 50})", 422, "*"},
       {"POST", "/api/v1/stability?bogus=1", sweep, 422, "bogus"},
@@ -264,3 +261,6 @@ TEST_F(BadInputMatrix, CostQueryConditionalAndIdCasesEndAsTheRfcAndTheBudgetAsk)
   }
   std::printf("bad-input matrix: %zu issue-17 cases\n", ran);
 }
+
+}  // namespace
+}  // namespace softtune::security
