@@ -59,7 +59,7 @@ std::optional<FieldError> check_body(const Body3D& b, const std::string& path) {
       return FieldError{path + ".inertia", "must be a symmetric 3x3 tensor"};
     const Eigen::Vector3d eig = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(i).eigenvalues();
     if (!(eig.minCoeff() >= limits::kMinInertia) || !(eig.maxCoeff() <= limits::kMaxInertia))
-      return FieldError{path + ".inertia", "must be positive definite with principal moments in " +
+      return FieldError{path + ".inertia", "must be positive definite: each principal moment " +
                                                range_rule(limits::kMinInertia, limits::kMaxInertia, "kg m^2")};
   }
   if (auto e = check_vector(b.position.data(), 3, path + ".position")) return e;

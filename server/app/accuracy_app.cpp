@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "app/accuracy_cost.h"
 #include "app/stability_app.h"
 #include "box2d_spring.h"
 #include "plot/csv_writer.h"
@@ -32,6 +33,7 @@ std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
 
 AccuracyReport run_accuracy_report(const AccuracyRequest& q, const std::optional<EngineRunner>& engine,
                                    const SecondsClock& clock) {
+  require_within_budget(accuracy_cost(q, engine.has_value(), false));
   AccuracySettings s = q.settings;
   s.clock = clock;
   if (q.box2d) s.engine = engine;
@@ -48,6 +50,7 @@ EngineRunner box2d_row() { return EngineRunner{kBox2DRowName, run_box2d_spring};
 
 Answer accuracy_answer(const json& request, Format format) {
   const AccuracyRequest q = codec::decode_accuracy_request(request);
+  require_within_budget(accuracy_cost(q, true, format == Format::svg));
   const AccuracyReport report = run_accuracy_report(q, box2d_row());
   Answer a;
   a.format = format;

@@ -12,7 +12,7 @@
 
 namespace softtune::app {
 
-/// Runs the report; `engine` adds its row per step rate and the `box2d_distance_joint` stage. `clock`
+/// Runs the report, refused (422) first when over the budget (accuracy_cost.h); `engine` adds its row per step rate and the `box2d_distance_joint` stage. `clock`
 /// replaces the steady clock (tests).
 AccuracyReport run_accuracy_report(const codec::AccuracyRequest& request, const std::optional<EngineRunner>& engine,
                                    const SecondsClock& clock = steady_clock_seconds);

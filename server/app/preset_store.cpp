@@ -87,8 +87,8 @@ nlohmann::json load_preset_file(const std::string& path, const std::string& sche
 
 void validate_preset(const nlohmann::json& preset, const nlohmann::json& schema, const std::string& file) {
   if (auto e = validate_json_schema(preset, schema)) {
-    const std::string pointer = e->pointer.empty() ? "(root)" : e->pointer;
-    throw Problem(422, "Invalid preset", e->pointer, file + ": " + pointer + " " + e->rule);
+    const std::string field = dotted_path(e->pointer);
+    throw Problem(422, "Invalid preset", field, file + ": " + (field.empty() ? "(root)" : field) + " " + e->rule);
   }
 }
 

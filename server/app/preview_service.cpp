@@ -1,6 +1,7 @@
 #include "app/preview_service.h"
 
 #include "app/scene_tuning.h"
+#include "app/scene_cost.h"
 #include "app/simulate_app.h"
 
 #include <algorithm>
@@ -55,9 +56,10 @@ void plan_oscillator(PreviewPlan& plan, const TuneRequest& request, double initi
   };
 }
 
+// `prefix` is where the scene sits in the request ("scene." or ""), for the cost's field names.
 void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::MassModel> mass_model,
-                const json* ghost_doc) {
-  const scene::Scene scene = decode_scene(scene_doc);
+                const json* ghost_doc, const std::string& prefix) {
+  const scene::Scene scene = decode_requested_scene(scene_doc, prefix);
   std::optional<scene::Scene> ghost;
   if (ghost_doc) ghost = ghost_scene(scene, *ghost_doc);
   const int total = scene::frame_count(scene.world);
@@ -73,6 +75,16 @@ void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::M
   options.frame_stride = plan.settings.frames > 1 ? std::max(1, total / (plan.settings.frames - 1)) : 1;
   options.mass_model = mass_model;
   plan.frame_dt_s = options.frame_stride / scene.world.fps;
+  // The run happens on the render pool, which draws one preview at a time: a scene over the budget would
+  // hold every preview behind it. A ghost runs the scene a second time.
+  RequestCost cost = scene_cost(scene, options, prefix);
+  if (ghost) {
+    const RequestCost second = scene_cost(*ghost, options, prefix);
+    cost.cpu_seconds += second.cpu_seconds;
+    cost.peak_bytes += second.peak_bytes;
+    cost.work += " (twice: the ghost tuning runs the scene again)";
+  }
+  require_within_budget(cost);
   plan.canonical = "scene:" + scene_doc.dump() + "|mass_model:" +
                    (mass_model ? std::string(scene::mass_model_name(*mass_model)) : "scene") +
                    "|stride:" + std::to_string(options.frame_stride) + (ghost_doc ? "|ghost:" + ghost_doc->dump() : "");
@@ -132,7 +144,7 @@ PreviewPlan plan_preview(const json& request, const std::string& presets_dir) {
     const json tuning = oscillator_preset_tuning(preset, x0);
     plan_oscillator(plan, decode_tune_request(tuning), x0);
   } else if (r.has("preset") || r.has("scene")) {
-    plan_scene(plan, requested_scene_document(r, request, presets_dir, {}), mass_model, ghost);
+    plan_scene(plan, requested_scene_document(r, request, presets_dir, {}), mass_model, ghost, r.has("scene") ? "scene." : "");
   } else if (has_tune_fields) {
     plan_oscillator(plan, read_tune_fields(r), 0.5);
   } else {

@@ -3,6 +3,7 @@
 #include "app/check_app.h"
 #include "app/scene_tuning.h"
 #include "app/preset_store.h"
+#include "app/scene_cost.h"
 #include "codec/json_writer.h"
 #include "codec/problem.h"
 #include "codec/scene_codec.h"
@@ -26,7 +27,11 @@ json requested_scene_document(ObjectReader& r, const json& request, const std::s
       scene_doc = *r.raw("scene");
       // The schema would name the scene's root "" (its own JSON pointer); the request's field is "scene".
       if (!scene_doc.is_object()) throw invalid_field("scene", "must be a JSON object (a scene, as in presets/*.json)");
-      validate_preset(scene_doc, load_schema(presets_dir), "scene");
+      try {
+        validate_preset(scene_doc, load_schema(presets_dir), "scene");
+      } catch (const Problem& p) {
+        throw prefixed(p, "scene.");
+      }
     }
     if (const json* tuning = r.raw("tuning")) apply_scene_tuning(scene_doc, *tuning);
     return scene_doc;
@@ -37,6 +42,21 @@ json requested_scene_document(ObjectReader& r, const json& request, const std::s
   validate_preset(scene_doc, load_schema(presets_dir), "request");
   for (auto it = scene_doc.begin(); it != scene_doc.end(); ++it) r.raw(it.key());
   return scene_doc;
+}
+
+Problem prefixed(const Problem& p, const std::string& prefix) {
+  Problem out(p.status, p.title, p.field.empty() ? prefix.substr(0, prefix.size() - 1) : prefix + p.field, p.detail);
+  out.extensions = p.extensions;
+  return out;
+}
+
+Scene decode_requested_scene(const json& scene_doc, const std::string& prefix) {
+  try {
+    return decode_scene(scene_doc);
+  } catch (const Problem& p) {
+    if (prefix.empty()) throw;
+    throw prefixed(p, prefix);
+  }
 }
 
 json run_simulate(const json& request, const std::string& presets_dir) {
@@ -52,7 +72,9 @@ json run_simulate(const json& request, const std::string& presets_dir) {
     options.frame_stride = static_cast<int>(*stride);
   }
   r.finish();
-  const Scene scene = decode_scene(scene_doc);
+  const std::string prefix = request.contains("scene") ? "scene." : "";
+  const Scene scene = decode_requested_scene(scene_doc, prefix);
+  require_within_budget(scene_cost(scene, options, prefix));
   return encode_scene_result(scene, run_scene(scene, options));
 }
 

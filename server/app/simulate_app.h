@@ -8,6 +8,8 @@
 #include <string>
 
 #include "codec/json_reader.h"
+#include "codec/problem.h"
+#include "softtune/scene/scene.h"
 
 namespace softtune::app {
 
@@ -22,6 +24,13 @@ nlohmann::json run_simulate(const nlohmann::json& request, const std::string& pr
 /// with {"tuning": {...}} (app/scene_tuning.h), applied to its designer-tuned items. Marks what it read in `r`.
 nlohmann::json requested_scene_document(codec::ObjectReader& r, const nlohmann::json& request, const std::string& presets_dir,
                                         std::initializer_list<const char*> run_options);
+
+/// decode_scene, with `prefix` ("scene." for a request's "scene" key, "" for a bare scene or a preset)
+/// before the field of any problem, so the field is the dotted path in the request.
+scene::Scene decode_requested_scene(const nlohmann::json& scene_doc, const std::string& prefix);
+/// `p` with `prefix` before its field ("scene." + "world.fps"; the prefix alone, without its dot, for a
+/// problem about the whole document).
+codec::Problem prefixed(const codec::Problem& p, const std::string& prefix);
 
 /// The same with the presets directory from resolve_presets_dir().
 nlohmann::json run_simulate(const nlohmann::json& request);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/stability_cost.h"
 #include "plot/svg_writer.h"
 
 namespace softtune::app {
@@ -11,6 +12,7 @@ namespace softtune::app {
 using nlohmann::json;
 
 json run_stability(const codec::StabilityRequest& q) {
+  require_within_budget(stability_cost(q));
   StageList stages;
   stages.add(Stage::validate);
   stages.add(Stage::stability_sweep);

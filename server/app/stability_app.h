@@ -12,7 +12,7 @@
 
 namespace softtune::app {
 
-/// Runs the sweep and the chain; the JSON has summary, cases (unless summary only), chain, stages.
+/// Runs the sweep and the chain, refused (422) first when over the budget (stability_cost.h); the JSON has summary, cases (unless summary only), chain, stages.
 nlohmann::json run_stability(const codec::StabilityRequest& request);
 nlohmann::json run_stability(const nlohmann::json& doc);
 

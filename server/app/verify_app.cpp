@@ -1,5 +1,6 @@
 #include "app/verify_app.h"
 
+#include "app/verify_cost.h"
 #include "codec/verify_codec.h"
 
 namespace softtune::app {
@@ -27,6 +28,7 @@ void describe_plank(TuneRequest& q) {
 
 nlohmann::json run_verify(const nlohmann::json& request) {
   codec::VerifyRequest q = codec::decode_verify_request(request);
+  require_within_budget(verify_cost(q));
   if (q.options.body == engines::RunBody::rotating_plank) describe_plank(q.tune);
   const TuneResult tuned = tune(q.tune);
   std::vector<engines::EngineVerification> runs;

@@ -26,6 +26,8 @@ constexpr const char* kHelp = R"(softtune serve: the REST API under /api/v1/ and
   --port P       TCP port (default 8080; 0 picks a free one)
   --threads N    worker threads, one per request being served (default 8, at most 256)
   --web DIR      folder of the static page (default web/, relative to the working directory)
+  --cors-origin O  answer cross-origin requests from origin O ("https://tools.example:8443"; repeatable;
+                 "*" for any): CORS headers on every answer, preflights answered (default: off)
   --presets DIR  presets directory of /api/v1/simulate and /api/v1/presets (default: $SOFTTUNE_PRESETS,
                  else presets/, relative to the working directory)
 
@@ -42,6 +44,22 @@ int integer_flag(const Flags& f, const std::string& name, int fallback, int lo, 
   return static_cast<int>(v);
 }
 
+// Every value of a flag given more than once (Flags keeps the last): --cors-origin A --cors-origin=B.
+std::vector<std::string> repeated_flag(const Args& args, const std::string& name) {
+  std::vector<std::string> out;
+  const std::string flag = "--" + name;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == flag && i + 1 < args.size()) out.push_back(args[++i]);
+    else if (args[i].rfind(flag + "=", 0) == 0) out.push_back(args[i].substr(flag.size() + 1));
+  }
+  for (const std::string& origin : out) {
+    if (origin != "*" && origin.find("://") == std::string::npos) {
+      throw codec::invalid_field(flag, "must be an origin (scheme://host[:port]) or *, got \"" + origin + "\"");
+    }
+  }
+  return out;
+}
+
 void log_line(std::string_view line) {
   std::string out(line);
   out += '\n';
@@ -52,7 +70,7 @@ void log_line(std::string_view line) {
 
 int run_serve(const Args& args) {
   return guarded([&] {
-    const Flags flags = parse_flags(args, {"host", "port", "threads", "web", "presets"}, {"help"});
+    const Flags flags = parse_flags(args, {"host", "port", "threads", "web", "presets", "cors-origin"}, {"help"});
     if (flags.has("help")) {
       std::cout << kHelp;
       return kExitOk;
@@ -68,6 +86,7 @@ int run_serve(const Args& args) {
       std::cerr << "softtune: web folder \"" << config.web_root.string() << "\" not found; the page will answer 404\n";
     }
     config.presets_dir = app::resolve_presets_dir(flags.get("presets"));
+    config.cors.origins = repeated_flag(args, "cors-origin");
     if (!std::filesystem::is_directory(config.presets_dir)) {
       std::cerr << "softtune: presets folder \"" << config.presets_dir << "\" not found; /api/v1/presets will answer 404\n";
     }

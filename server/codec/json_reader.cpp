@@ -16,12 +16,12 @@ struct OpenValue {
   std::size_t index = 0;       ///< the element being read (arrays)
 };
 
-// The dotted path of the value being read: "constraint.anchor_a[1]".
+// The dotted path of the value being read: "constraint.anchor_a.1".
 std::string open_path(const std::vector<OpenValue>& open) {
   std::string path;
   for (const OpenValue& v : open) {
     if (v.array) {
-      path += "[" + std::to_string(v.index) + "]";
+      path += (path.empty() ? "" : ".") + std::to_string(v.index);
     } else if (!v.key.empty()) {
       path += (path.empty() ? "" : ".") + v.key;
     }
@@ -63,10 +63,26 @@ nlohmann::json parse_json(std::string_view text) {
   try {
     return nlohmann::json::parse(text.begin(), text.end(), callback);
   } catch (const nlohmann::json::out_of_range& e) {
-    throw Problem(400, "Malformed JSON", open_path(open), std::string("number out of range (must be finite): ") + e.what());
+    // Well-formed JSON whose value no double holds: a value out of range (422), like 1e308 * 10 would be.
+    throw invalid_field(open_path(open), "must be a finite number: the value overflows a double (largest 1.8e308)");
   } catch (const nlohmann::json::exception& e) {
     throw malformed_json(e.what());
   }
+}
+
+std::string dotted_path(std::string_view pointer) {
+  std::string out;
+  for (std::size_t i = 0; i < pointer.size(); ++i) {
+    const char c = pointer[i];
+    if (c == '/') {
+      if (i > 0) out += '.';
+    } else if (c == '~' && i + 1 < pointer.size() && (pointer[i + 1] == '0' || pointer[i + 1] == '1')) {
+      out += pointer[++i] == '0' ? '~' : '/';
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 ObjectReader::ObjectReader(const nlohmann::json& object, std::string path)

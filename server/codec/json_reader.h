@@ -14,6 +14,10 @@ namespace softtune::codec {
 
 inline constexpr int kMaxJsonDepth = 32;
 
+/// The dotted path of a JSON pointer: "/world/fps" -> "world.fps", "/bodies/0/mass" -> "bodies.0.mass"
+/// (RFC 6901 escapes ~1 and ~0 undone). Every problem names its field this way.
+std::string dotted_path(std::string_view pointer);
+
 /// Parses `text` as one JSON document; 400 when malformed, too deep or holding a duplicated key.
 nlohmann::json parse_json(std::string_view text);
 

@@ -33,7 +33,7 @@ std::optional<std::vector<T>> read_list(ObjectReader& r, std::string_view key, s
   std::vector<T> out;
   for (std::size_t i = 0; i < v->size(); ++i) {
     T value{};
-    if (!read((*v)[i], value)) throw invalid_field(r.field(key) + "[" + std::to_string(i) + "]", rule);
+    if (!read((*v)[i], value)) throw invalid_field(r.field(key) + "." + std::to_string(i), rule);
     out.push_back(value);
   }
   return out;

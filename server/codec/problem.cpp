@@ -26,7 +26,13 @@ Problem malformed_json(std::string detail) { return Problem(400, "Malformed JSON
 nlohmann::json problem_json(const Problem& p) {
   std::string type = "/problems/";
   for (char c : p.title) type += c == ' ' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return {{"type", type}, {"title", p.title}, {"status", p.status}, {"detail", p.detail}, {"field", p.field}};
+  nlohmann::json out = {{"type", type}, {"title", p.title}, {"status", p.status}, {"detail", p.detail}, {"field", p.field}};
+  if (p.extensions.is_object()) {
+    for (auto it = p.extensions.begin(); it != p.extensions.end(); ++it) {
+      if (!out.contains(it.key())) out[it.key()] = it.value();
+    }
+  }
+  return out;
 }
 
 }  // namespace softtune::codec

@@ -11,8 +11,11 @@ namespace softtune::codec {
 struct Problem : std::runtime_error {
   int status;          ///< HTTP status: 400 malformed, 413 too large, 415 content type, 422 invalid value
   std::string title;   ///< short, fixed per kind
-  std::string field;   ///< dotted path of the offending field ("constraint.body_a.mass"), "" for the body
+  std::string field;   ///< dotted path of the offending field ("constraint.body_a.mass", "bodies.0.mass"; never a JSON pointer), "" for the body
   std::string detail;  ///< the rule the value broke
+  /// Extension members (RFC 9457 3.2) added to the JSON beside the five above, e.g. the cost budget's
+  /// "fields", "estimated_cpu_seconds" and "budget_cpu_seconds" (app/request_cost.h); an object or null.
+  nlohmann::json extensions;
   Problem(int status, std::string title, std::string field, std::string detail);
 };
 
@@ -21,7 +24,7 @@ Problem invalid_field(std::string field, std::string rule);
 /// 400: the body is not JSON.
 Problem malformed_json(std::string detail);
 
-/// {type, title, status, detail, field}
+/// {type, title, status, detail, field} and the extension members
 nlohmann::json problem_json(const Problem& p);
 
 }  // namespace softtune::codec

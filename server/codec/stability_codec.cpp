@@ -86,7 +86,7 @@ std::vector<Method> read_methods(ObjectReader& r) {
   std::vector<Method> out;
   for (std::size_t i = 0; i < v->size(); ++i) {
     const auto m = (*v)[i].is_string() ? method_from_name((*v)[i].get<std::string>()) : std::nullopt;
-    if (!m) throw invalid_field("methods[" + std::to_string(i) + "]", rule);
+    if (!m) throw invalid_field("methods." + std::to_string(i), rule);
     out.push_back(*m);
   }
   return out;
@@ -191,6 +191,11 @@ json chain_json(const StabilityRequest& q, const ChainSweepResult& chain) {
 
 }  // namespace
 
+std::size_t grid_case_bound(const SweepSettings& s) {
+  return s.methods.size() * s.steps.size() * s.masses.size() * s.damping_ratios.size() *
+         (s.frequency_ratios.size() + s.stiffnesses.size());
+}
+
 StabilityRequest decode_stability_request(const json& doc) {
   StabilityRequest q;
   if (doc.is_null()) return q;
@@ -216,8 +221,7 @@ StabilityRequest decode_stability_request(const json& doc) {
   }
   read_chain(r, q);
   r.finish();
-  const std::size_t cases = s.methods.size() * s.steps.size() * s.masses.size() * s.damping_ratios.size() *
-                            (s.frequency_ratios.size() + s.stiffnesses.size());
+  const std::size_t cases = grid_case_bound(s);
   if (cases > kMaxCases) {
     throw invalid_field("frequency_ratios", "the grid has " + std::to_string(cases) + " cases; the limit is " +
                                                 std::to_string(kMaxCases) + ": shorten the lists");

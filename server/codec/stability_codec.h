@@ -36,6 +36,11 @@ std::optional<std::vector<ChainSolver>> read_chain_solvers(const nlohmann::json*
 /// "found", "none_in_range" (no limit inside the searched range), "unstable_at_lowest".
 const char* limit_kind_name(LimitKind kind);
 
+/// Cases of the sweep grid at most (run_sweep skips frequency cases above max_stiffness): methods x steps
+/// x masses x damping_ratios x (frequency_ratios + stiffnesses). Capped at kMaxCases, and priced by
+/// app::stability_cost.
+std::size_t grid_case_bound(const SweepSettings& s);
+
 /// An empty object (or null) is the default sweep. Throws Problem (422) naming the field and the rule.
 StabilityRequest decode_stability_request(const nlohmann::json& doc);
 

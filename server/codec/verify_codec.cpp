@@ -25,7 +25,7 @@ std::vector<const engines::RealEngine*> read_engines(ObjectReader& r) {
   if (!v->is_array()) throw invalid_field(r.field("engines"), "must be an array of engine names");
   if (v->size() > kVerifyMaxEngines) throw invalid_field(r.field("engines"), "must name at most 16 engines");
   for (std::size_t i = 0; i < v->size(); ++i) {
-    const std::string field = r.field("engines") + "[" + std::to_string(i) + "]";
+    const std::string field = r.field("engines") + "." + std::to_string(i);
     if (!(*v)[i].is_string()) throw invalid_field(field, "must be an engine name (" + engine_names() + ")");
     const std::string name = (*v)[i].get<std::string>();
     const engines::RealEngine* e = engines::find_real_engine(name);

@@ -88,7 +88,13 @@ void fill(httplib::Response& res, HttpResponse&& plain) {
   res.status = plain.status;
   for (const auto& [k, v] : plain.headers) res.set_header(k, v);
   res.body = std::move(plain.body);
-  res.set_header("Content-Type", plain.content_type);
+  // A 304 or 204 has no content, so no Content-Type line (not an empty one).
+  if (!plain.content_type.empty()) res.set_header("Content-Type", plain.content_type);
+}
+
+std::optional<std::string> origin_of(const httplib::Request& req) {
+  if (!req.has_header("Origin")) return std::nullopt;
+  return req.get_header_value("Origin");
 }
 
 // Answer, then close: the client learns it from the Connection header (the library adds one itself
@@ -236,9 +242,10 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
   s.set_write_timeout(o.write_timeout);
   s.new_task_queue = [&s] { return s.new_gate_queue(); };
 
-  s.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+  s.set_pre_routing_handler([&service = impl_->service](const httplib::Request& req, httplib::Response& res) {
     if (t_connection) t_connection->head_done = true;
     if (auto refusal = head_refusal(req)) {
+      service.add_cors(origin_of(req), *refusal);
       fill(res, std::move(*refusal));
       close_connection(req, res);
       return httplib::Server::HandlerResponse::Handled;
@@ -248,8 +255,9 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
 
   // "Expect: 100-continue" is answered before the pre-routing hook runs: refuse there too, so a client
   // never sends a body we would refuse.
-  s.set_expect_100_continue_handler([](const httplib::Request& req, httplib::Response& res) {
+  s.set_expect_100_continue_handler([&service = impl_->service](const httplib::Request& req, httplib::Response& res) {
     if (auto refusal = head_refusal(req)) {
+      service.add_cors(origin_of(req), *refusal);
       const int status = refusal->status;
       fill(res, std::move(*refusal));
       close_connection(req, res);
@@ -271,9 +279,11 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
   s.Options(".*", dispatch);
 
   // Statuses the library sets itself (malformed head, too long a target, ...) get a problem body too.
-  s.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
+  s.set_error_handler(httplib::Server::HandlerWithResponse([&service = impl_->service](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
-    fill(res, library_refusal(res.status, t_connection));
+    HttpResponse refusal = library_refusal(res.status, req.method, t_connection);
+    service.add_cors(origin_of(req), refusal);
+    fill(res, std::move(refusal));
     close_connection(req, res);
     return httplib::Server::HandlerResponse::Handled;
   }));

@@ -6,6 +6,7 @@
 #include "app/check_app.h"
 #include "app/check_cost.h"
 #include "app/check_request.h"
+#include "app/budgets.h"
 #include "app/preset_store.h"
 #include "app/preview_service.h"
 #include "codec/identify_codec.h"
@@ -72,6 +73,8 @@ std::vector<NumericLimit> numeric_limits() {
       {"response_cache_entries", D(hl::kResponseCacheEntries)},
       {"response_cache_bytes", D(hl::kResponseCacheBytes)},
       {"max_header_line_bytes", D(hl::kMaxHeaderLineBytes)},
+      {"request_budget_cpu_s", app::budgets::kCpuSeconds},
+      {"request_budget_peak_bytes", app::budgets::kPeakBytes},
       {"scene_max_duration_s", sl::kMaxDurationS},
       {"scene_max_steps", sl::kMaxSceneSteps},
       {"scene_max_body_steps", sl::kMaxBodySteps},
@@ -148,8 +151,21 @@ std::vector<LimitRow> request_rows() {
       {"JSON nesting", figure(codec::kMaxJsonDepth) + " levels", "`server/codec/json_reader.h` `kMaxJsonDepth`",
        "400 (nlohmann's recursive dump and copy would crash on deep documents)"},
       {"JSON numbers", "finite doubles", "`server/codec/json_reader.cpp`",
-       "400 naming the key (`1e999`); `NaN`, `Infinity` as bare words are malformed JSON (400), as strings a wrong "
-       "type (422)"},
+       "422 naming the dotted field (`1e999`, `1e309`); `NaN`, `Infinity` as bare words are malformed JSON (400), as "
+       "strings a wrong type (422)"},
+      {"cost of one request",
+       "about " + figure(app::budgets::kCpuSeconds) + " s of CPU on one core here and " +
+           bytes(static_cast<std::size_t>(app::budgets::kPeakBytes)) +
+           " held at its peak, estimated from the request's own fields before any work (stability cases x steps, "
+           "accuracy rows x steps x repeats, scene frames x substeps x bodies, verify engines x steps)",
+       "`server/app/budgets.h` `kCpuSeconds`, `kPeakBytes`; each contract's estimate in `server/app/*_cost.h`",
+       "422 `request-over-budget` naming the fields that drive the cost (`field` the first, `fields` all) with "
+       "`estimated_cpu_seconds`, `budget_cpu_seconds`, `estimated_peak_bytes`, `budget_peak_bytes`"},
+      {"query parameters", "only those a route reads (`format` on accuracy and stability), each once",
+       "`server/http/routes.cpp` (each row's list), `server/http/service.cpp`", "422 naming the parameter"},
+      {"preview ids and frame numbers", "64 lower-case hex digits; frame numbers without sign or leading zeros",
+       "`server/http/preview_routes.cpp`",
+       "404 that does not echo the id (`00.png` is a 404 naming `n`, pointing at `0.png`)"},
       {"duplicated keys", "none", "`server/codec/json_reader.cpp`", "400 naming the key"},
       {"unknown fields", "none", "`ObjectReader::finish`, `server/codec/json_reader.h`", "422 naming the dotted field"},
       {"paths", "no `..`, `%2e%2e`, `..%2f`, `%00`, backslashes or non-UTF-8 after decoding; static files only under `web/`",

@@ -22,6 +22,11 @@ std::optional<codec::Problem> check_request_head(const HttpRequest& head) {
     return codec::Problem(415, "Unsupported media type", "Content-Encoding",
                           "compressed request bodies are not accepted; send uncompressed application/json");
   }
+  for (const char* name : {"Content-Type", "Content-Length"}) {
+    if (head.headers.count(name) > 1) {
+      return codec::Problem(400, "Bad request", name, std::string("the header is given more than once; give it once"));
+    }
+  }
   const std::optional<std::string> length_text = head.header("Content-Length");
   if (!length_text) {
     if (method_has_body(head.method)) {

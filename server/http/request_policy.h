@@ -17,6 +17,7 @@ inline constexpr const char* kPolicyHeaders[] = {"Transfer-Encoding", "Content-E
 ///   Transfer-Encoding present            -> 411 (bodies must come with Content-Length)
 ///   Content-Encoding present             -> 415 (compressed bodies are refused)
 ///   POST/PUT/PATCH without Content-Length -> 411
+///   Content-Type or Content-Length twice -> 400
 ///   Content-Length not a decimal number  -> 400
 ///   Content-Length > limits::kMaxBodyBytes -> 413
 ///   GET/HEAD/DELETE/OPTIONS with a body   -> 400

@@ -88,14 +88,14 @@ std::vector<Route> service_routes() {
       {"POST", std::string(kIdentifyPath), identify},
       {"GET", "/api/v1/presets", presets},
       {"GET", "/api/v1/presets/{name}", preset},
-      {"POST", "/api/v1/accuracy", accuracy},
-      {"GET", "/api/v1/stability", default_stability()},
-      {"POST", "/api/v1/stability", stability},
+      {"POST", "/api/v1/accuracy", accuracy, {"format"}},
+      {"GET", "/api/v1/stability", default_stability(), {"format"}},
+      {"POST", "/api/v1/stability", stability, {"format"}},
       {"GET", "/api/v1/openapi.json", openapi},
       {"GET", "/metrics", metrics},
   };
   for (Route& r : preview_routes()) routes.push_back(std::move(r));
-  routes.push_back({"GET", "/{path...}", static_page});  // the static page's catch-all comes last
+  routes.push_back({"GET", "/{path...}", static_page, {"*"}});  // the static page's catch-all comes last
   return routes;
 }
 

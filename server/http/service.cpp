@@ -1,6 +1,10 @@
 #include "http/service.h"
 
+#include <algorithm>
+
 #include "codec/problem.h"
+#include "http/cors.h"
+#include "http/memory_release.h"
 #include "http/router.h"
 
 namespace softtune::http {
@@ -8,10 +12,28 @@ namespace {
 
 std::string_view routing_method(std::string_view method) { return method == "HEAD" ? "GET" : method; }
 
+// A query parameter the route does not read would be ignored silently (as unknown body fields are not),
+// and a repeated one would leave which value counts to chance.
+void check_query(const Route& route, const HttpRequest& request) {
+  if (route.query.size() == 1 && route.query.front() == "*") return;
+  for (auto it = request.query.begin(); it != request.query.end(); it = request.query.upper_bound(it->first)) {
+    const std::string name = it->first.substr(0, 64);
+    if (std::find(route.query.begin(), route.query.end(), it->first) == route.query.end()) {
+      std::string known;
+      for (const std::string& q : route.query) known += (known.empty() ? "" : ", ") + q;
+      throw codec::invalid_field(name, "is not a query parameter of " + route.pattern +
+                                           (known.empty() ? " (it takes none)" : " (it takes " + known + ")"));
+    }
+    if (request.query.count(it->first) > 1) throw codec::invalid_field(name, "is given more than once; give it once");
+  }
+}
+
 }  // namespace
 
 Service::Service(ServiceConfig config, std::vector<Route> routes)
-    : config_(std::move(config)), routes_(std::move(routes)), cache_(config_.cache_entries, config_.cache_bytes) {}
+    : config_(std::move(config)), routes_(std::move(routes)), cache_(config_.cache_entries, config_.cache_bytes) {
+  configure_allocator();
+}
 
 // Exact patterns first; when the path has routes only under other methods, nothing (405 follows); the
 // static catch-all last, so GET /api/v1/tune is "405, use POST" and not "no such file".
@@ -47,8 +69,29 @@ double Service::uptime_seconds() const {
 }
 
 HttpResponse Service::handle(HttpRequest request) {
+  const auto start = std::chrono::steady_clock::now();
+  memory_.enter();
+  const std::optional<std::string> origin = request.header("Origin");
+  HttpResponse response = config_.cors.enabled() && is_preflight(request) ? preflight(request) : dispatch(std::move(request));
+  add_cors(origin, response);
+  memory_.leave(std::chrono::steady_clock::now() - start, response.body.size());
+  return response;
+}
+
+// A preflight names the path it will ask: the methods of its exact routes, or GET for a static file.
+HttpResponse Service::preflight(const HttpRequest& request) const {
+  std::string allow = allowed_methods(request.path);
+  if (allow.empty() && find("GET", request.path)) allow = "GET";
+  if (allow.empty()) {
+    return problem_response(codec::Problem(404, "Not found", "path", "no route for " + request.path));
+  }
+  return preflight_response(config_.cors, request, allow);
+}
+
+HttpResponse Service::dispatch(HttpRequest request) {
   try {
     if (const Route* r = find(request.method, request.path)) {
+      check_query(*r, request);
       request.params = *match_route(r->pattern, request.path);
       HttpResponse response = r->handler(request, *this);
       response.route = r->pattern;

@@ -13,9 +13,28 @@ HttpRequest policy_head(const httplib::Request& req) {
   out.method = req.method;
   out.path = req.path;
   for (const char* name : kPolicyHeaders) {
-    if (auto it = req.headers.find(name); it != req.headers.end()) out.headers.emplace(name, it->second);
+    const auto [first, last] = req.headers.equal_range(name);
+    for (auto it = first; it != last; ++it) out.headers.emplace(name, it->second);
   }
   return out;
+}
+
+// RFC 9110 5.6.2 token characters: a method is a token.
+bool is_token(std::string_view s) {
+  constexpr std::string_view kSpecial = "!#$%&'*+-.^_`|~";
+  if (s.empty() || s.size() > 32) return false;
+  for (char c : s) {
+    const bool alnum = (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+    if (!alnum && kSpecial.find(c) == std::string_view::npos) return false;
+  }
+  return true;
+}
+
+bool served(std::string_view method) {
+  for (const char* m : kServedMethods) {
+    if (method == m) return true;
+  }
+  return false;
 }
 
 // Problems for the statuses the library produces itself, before any handler runs.
@@ -37,7 +56,7 @@ std::optional<HttpResponse> head_refusal(const httplib::Request& req) {
   return std::nullopt;
 }
 
-HttpResponse library_refusal(int status, const ConnectionState* state) {
+HttpResponse library_refusal(int status, std::string_view method, const ConnectionState* state) {
   // The library refuses a header line over its compiled-in limit with a bare 400; the bytes read
   // tell that case apart from a malformed head.
   const bool line_too_long =
@@ -47,6 +66,13 @@ HttpResponse library_refusal(int status, const ConnectionState* state) {
                                            "the request line and headers are limited to " +
                                                std::to_string(limits::kMaxHeaderBytes) + " bytes, each line to " +
                                                std::to_string(limits::kMaxHeaderLineBytes)));
+  }
+  if (status == 400 && is_token(method) && !served(method)) {
+    std::string listed;
+    for (const char* m : kServedMethods) listed += (listed.empty() ? "" : ", ") + std::string(m);
+    return problem_response(codec::Problem(501, "Not implemented", "method",
+                                           "the method " + std::string(method.substr(0, 32)) +
+                                               " is not implemented; this server implements " + listed));
   }
   return problem_response(library_problem(status));
 }

@@ -30,9 +30,15 @@ namespace softtune::http {
 /// The request policy's refusal of this head, or nothing (the request goes on to its handler).
 std::optional<HttpResponse> head_refusal(const httplib::Request& req);
 
+/// The methods the transport hands to the service (HEAD is served as GET).
+inline constexpr const char* kServedMethods[] = {"GET", "HEAD", "POST", "PUT", "PATCH", "DELETE", "OPTIONS"};
+
 /// The answer to `status`, which the library set itself before any handler ran. `state` is the
 /// connection's (null outside a worker): its head counts tell a too-long head (431) from a malformed one.
-HttpResponse library_refusal(int status, const ConnectionState* state);
+/// `method` is the request line's first word as the library read it: a 400 for a well-formed method the
+/// service does not implement (TRACE, CONNECT, a lower-case "get", any other token; methods are
+/// case-sensitive, RFC 9110 9.1) is 501 instead.
+HttpResponse library_refusal(int status, std::string_view method, const ConnectionState* state);
 
 /// The answer when a handler's exception reached the library (500).
 HttpResponse internal_error_refusal();

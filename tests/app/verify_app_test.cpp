@@ -76,9 +76,9 @@ TEST(VerifyApp, EveryLinkedEngineMeetsItsPredictionAndExactMeetsTheRequest) {
 }
 
 TEST(VerifyApp, BadInputNamesTheField) {
-  EXPECT_EQ(problem_field(request({"jolt"})), "engines[0]");       // modelled, runs under node only
-  EXPECT_EQ(problem_field(request({"no_such_engine"})), "engines[0]");
-  EXPECT_EQ(problem_field(request({"ode", "ode"})), "engines[1]");
+  EXPECT_EQ(problem_field(request({"jolt"})), "engines.0");       // modelled, runs under node only
+  EXPECT_EQ(problem_field(request({"no_such_engine"})), "engines.0");
+  EXPECT_EQ(problem_field(request({"ode", "ode"})), "engines.1");
   json r = request({"ode"});
   r["duration_s"] = 0;
   EXPECT_EQ(problem_field(r), "duration_s");

@@ -107,8 +107,8 @@ TEST(AccuracyCodec, BadFieldsNameTheField) {
   expect_problem(with("error_budget", -1), "error_budget");
   expect_problem(with("error_budget", "5%"), "error_budget");
   expect_problem(with("step_rates", json::array()), "step_rates");
-  expect_problem(with("step_rates", {60, -5}), "step_rates[1]");
-  expect_problem(with("soft_substeps", {2, 0}), "soft_substeps[1]");
+  expect_problem(with("step_rates", {60, -5}), "step_rates.1");
+  expect_problem(with("soft_substeps", {2, 0}), "soft_substeps.1");
   expect_problem(with("duration_s", 0.1), "duration_s");  // shorter than 3 periods of 10 Hz
   expect_problem(with("duration_s", 1e6), "duration_s");  // too many steps
   expect_problem(with("timing_repeats", 0), "timing_repeats");

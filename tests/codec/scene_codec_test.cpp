@@ -81,7 +81,7 @@ TEST(Simulate, AFullSceneIsValidatedAndRun) {
     run_simulate(scene, kPresets);
     FAIL();
   } catch (const Problem& p) {
-    EXPECT_EQ(p.field, "/joints/0/response_frames");
+    EXPECT_EQ(p.field, "joints.0.response_frames");  // the dotted path, not the schema's pointer
     EXPECT_NE(p.detail.find("must be >= 0.01"), std::string::npos);
   }
 }
@@ -98,15 +98,15 @@ TEST(Presets, AnInvalidPresetIsRefusedWithFilePointerAndRule) {
     FAIL();
   } catch (const Problem& p) {
     EXPECT_EQ(p.status, 422);
-    EXPECT_EQ(p.field, "/world/fps");
+    EXPECT_EQ(p.field, "world.fps");
     EXPECT_NE(p.detail.find("broken.json"), std::string::npos);
-    EXPECT_NE(p.detail.find("/world/fps must be >= 1"), std::string::npos);
+    EXPECT_NE(p.detail.find("world.fps must be >= 1"), std::string::npos);
   }
   EXPECT_THROW(load_preset(dir.string(), "../schema"), Problem);
   const json index = presets_index(dir.string());
   ASSERT_EQ(index["presets"].size(), 1u);
   EXPECT_FALSE(index["presets"][0]["valid"].get<bool>());
-  EXPECT_EQ(index["presets"][0]["problem"]["field"], "/world/fps");
+  EXPECT_EQ(index["presets"][0]["problem"]["field"], "world.fps");
   try {
     load_preset(dir.string(), "absent");
   } catch (const Problem& p) {

@@ -157,12 +157,12 @@ TEST(JsonReader, RefusesMalformedDeepAndDuplicated) {
     EXPECT_EQ(p.status, 400);
   }
   EXPECT_NO_THROW(parse_json(std::string(20, '[') + std::string(20, ']')));
-  // Huge exponents overflow a double: refused at parse time, naming the field.
+  // Huge exponents overflow a double: well-formed JSON, a value out of range (422) naming the field.
   try {
     parse_json(R"({"oscillation": "some", "response_frames": 1e999, "effective_mass": 1})");
     FAIL();
   } catch (const Problem& p) {
-    EXPECT_EQ(p.status, 400);
+    EXPECT_EQ(p.status, 422);
     EXPECT_EQ(p.field, "response_frames");
   }
 }

@@ -114,5 +114,20 @@ TEST(StabilitySweep, ExactClampAtNyquistStaysBounded) {
   EXPECT_EQ(classify_spectral_radius(*rho), Verdict::marginal);
 }
 
+// A damped run of 100 000 steps shrinks the states by e^-15000, far below the smallest double: the
+// observation rescales them and still finds the step matrix's own spectral radius (Gelfand), where
+// the unscaled run would end in zeros or subnormal digits.
+TEST(StabilitySweep, ObservedRadiusOfADeeplyDecayedRunMatchesTheStepMatrix) {
+  const double h = 0.01, omega = 2.0 * std::numbers::pi * 5.0, zeta = 0.5;
+  const StepModel model = make_step_model(1.0, omega, zeta, h);
+  for (Method m : {Method::semi_implicit_euler, Method::implicit_euler, Method::soft, Method::soft_exact}) {
+    const double predicted = analyze(m, model, omega, zeta).spectral_radius;
+    ASSERT_LT(std::pow(predicted, 100000), 1e-300) << method_name(m);
+    const auto observed = observed_spectral_radius(m, model, 100000);
+    ASSERT_TRUE(observed) << method_name(m);
+    EXPECT_NEAR(*observed, predicted, 1e-6 * predicted) << method_name(m);
+  }
+}
+
 }  // namespace
 }  // namespace softtune

@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "app/budgets.h"
 #include "app/accuracy_app.h"
 #include "app/check_cost.h"
 #include "app/check_request.h"
@@ -140,7 +141,9 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["check_max_presets"], softtune::app::kMaxCheckPresets);
   EXPECT_EQ(x["check_max_scenes"], softtune::app::kMaxCheckScenes);
   EXPECT_EQ(x["check_max_rates"], softtune::scene::limits::kMaxRates);
-  EXPECT_EQ(x.size(), 39u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x["request_budget_cpu_s"], softtune::app::budgets::kCpuSeconds);
+  EXPECT_EQ(x["request_budget_peak_bytes"], softtune::app::budgets::kPeakBytes);
+  EXPECT_EQ(x.size(), 41u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {

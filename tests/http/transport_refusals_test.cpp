@@ -31,27 +31,27 @@ TEST(TransportRefusals, AHeadThePolicyRefusesIsAnsweredBeforeItsBody) {
 TEST(TransportRefusals, ALongUnfinishedHeadIs431AndAMalformedOne400) {
   ConnectionState long_line;
   long_line.head_bytes = limits::kMaxHeaderLineBytes + 1;  // the library's bare 400 for its line limit
-  EXPECT_EQ(library_refusal(400, &long_line).status, 431);
-  EXPECT_EQ(body(library_refusal(400, &long_line))["field"], "headers");
+  EXPECT_EQ(library_refusal(400, "GET", &long_line).status, 431);
+  EXPECT_EQ(body(library_refusal(400, "GET", &long_line))["field"], "headers");
 
   ConnectionState overflow;
   overflow.head_overflow = true;
-  EXPECT_EQ(library_refusal(400, &overflow).status, 431);
+  EXPECT_EQ(library_refusal(400, "GET", &overflow).status, 431);
 
   ConnectionState short_head;
   short_head.head_bytes = 100;
-  EXPECT_EQ(library_refusal(400, &short_head).status, 400);
+  EXPECT_EQ(library_refusal(400, "GET", &short_head).status, 400);
   ConnectionState body_read = long_line;
   body_read.head_done = true;  // past the head: a 400 is the library's own
-  EXPECT_EQ(library_refusal(400, &body_read).status, 400);
-  EXPECT_EQ(library_refusal(400, nullptr).status, 400);
+  EXPECT_EQ(library_refusal(400, "GET", &body_read).status, 400);
+  EXPECT_EQ(library_refusal(400, "GET", nullptr).status, 400);
 }
 
 TEST(TransportRefusals, TheLibrarysOwnStatusesKeepTheirStatusAndNameTheirField) {
-  EXPECT_EQ(body(library_refusal(414, nullptr))["field"], "path");
-  EXPECT_EQ(body(library_refusal(413, nullptr))["field"], "Content-Length");
-  EXPECT_EQ(library_refusal(404, nullptr).status, 404);
-  EXPECT_EQ(library_refusal(418, nullptr).status, 418);
+  EXPECT_EQ(body(library_refusal(414, "GET", nullptr))["field"], "path");
+  EXPECT_EQ(body(library_refusal(413, "GET", nullptr))["field"], "Content-Length");
+  EXPECT_EQ(library_refusal(404, "GET", nullptr).status, 404);
+  EXPECT_EQ(library_refusal(418, "GET", nullptr).status, 418);
   EXPECT_EQ(internal_error_refusal().status, 500);
   EXPECT_EQ(internal_error_refusal().content_type, "application/problem+json");
 }
@@ -76,6 +76,20 @@ TEST(TransportRefusals, TheGatesAnswersAreWholeResponsesThatClose) {
   EXPECT_EQ(late.response.rfind("HTTP/1.1 408 Request Timeout\r\n", 0), 0u);
   EXPECT_EQ(late.response.find("Retry-After"), std::string::npos);
   EXPECT_EQ(gate_refusal(Refusal::timeout, "", options).method, "");
+}
+
+
+// RFC 9110 15.6.2: a method the server does not implement for any resource is 501, not a malformed
+// request; methods are case-sensitive, so a lower-case "get" is such a method too.
+TEST(TransportRefusals, UnknownMethodsAre501) {
+  for (const char* method : {"TRACE", "CONNECT", "get", "FOO", "M-SEARCH"}) {
+    const HttpResponse r = library_refusal(400, method, nullptr);
+    EXPECT_EQ(r.status, 501) << method;
+    EXPECT_EQ(body(r)["field"], "method") << method;
+  }
+  EXPECT_EQ(library_refusal(400, "GET", nullptr).status, 400);          // a served method: malformed elsewhere
+  EXPECT_EQ(library_refusal(400, "G\x01T", nullptr).status, 400);       // not a token
+  EXPECT_EQ(library_refusal(400, "", nullptr).status, 400);
 }
 
 }  // namespace

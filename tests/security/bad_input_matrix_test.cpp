@@ -186,5 +186,82 @@ TEST_F(BadInputMatrix, EveryDocumentedParameterRefusesHostileValuesNamingIt) {
   std::printf("bad-input matrix: %zu parameter cases\n", ran);
 }
 
+// Issue 17's hostile requests, each with the answer the API owes it: requests over the cost budget (422
+// naming the fields that drive the cost), conditional GETs (RFC 9110 13.1.2), query parameters that are
+// unknown or repeated, numbers that overflow a double, preview ids and frame numbers that are not in
+// their one valid form, and duplicated framing headers.
+TEST_F(BadInputMatrix, CostQueryConditionalAndIdCasesEndAsTheRfcAndTheBudgetAsk) {
+  auto client = server_->client();
+  client.set_read_timeout(60, 0);
+  struct Expect {
+    std::string method, path, body;
+    int status;
+    std::string field;  // "" for an answer without a problem
+  };
+  const std::string sweep = R"({"methods": ["soft"], "frequency_ratios": [0.1], "stiffnesses": [100], "damping_ratios": [0],
+                                "masses": [1], "steps": [0.01], "chain": false})";
+  std::vector<Expect> cases = {
+      {"POST", "/api/v1/stability", R"({"observe_steps": 91835})", 422, "observe_steps"},
+      {"POST", "/api/v1/stability", R"({"observe_steps": 100000, "chain": false, "include_cases": false})", 422, "observe_steps"},
+      {"POST", "/api/v1/stability", R"({"chain": {"iterations": [256, 255, 254, 253, 252, 251, 250, 249, 248, 247]}})", 422, "chain.iterations"},
+      {"POST", "/api/v1/accuracy", R"({"frequency_hz": 1, "oscillation": "some", "effective_mass": 1, "step_rates": [10000, 20000],
+                                     "soft_substeps": [1], "duration_s": 50, "timing_repeats": 51})", 422, "*"},
+      {"POST", "/api/v1/verify", R"({"frequency_hz": 2, "damping_ratio": 0.1, "effective_mass": 1, "fps": 4000,
+                                   "engines": ["box2d_v2_4", "ode", "bullet", "mujoco"], "duration_s": 50})", 422, "*"},
+      {"POST", "/api/v1/stability?bogus=1", sweep, 422, "bogus"},
+      {"POST", "/api/v1/stability?format=svg&format=json", sweep, 422, "format"},
+      {"POST", "/api/v1/tune?x=1", R"({"frequency_hz": 5, "damping_ratio": 0.5, "effective_mass": 1})", 422, "x"},
+      {"GET", "/api/v1/health?a=1", "", 422, "a"},
+      {"POST", "/api/v1/tune", R"({"frequency_hz": 1e309, "damping_ratio": 0.5, "effective_mass": 1})", 422, "frequency_hz"},
+      {"POST", "/api/v1/tune", R"({"frequency_hz": 5, "damping_ratio": 0.5, "constraint": {"anchor_a": [0, -1e309]}})", 422, "constraint.anchor_a.1"},
+      {"GET", "/api/v1/preview/" + std::string(5000, 'a'), "", 404, "id"},
+      {"GET", "/api/v1/preview/" + std::string(64, 'A') + "/0.png", "", 404, "id"},
+      {"GET", "/api/v1/preview/" + std::string(63, 'a') + "/filmstrip.png", "", 404, "id"},
+  };
+  // A finished preview for the conditional and frame-number cases.
+  auto started = client.Post("/api/v1/preview", R"({"preset": "oscillator", "frames": 2, "size": "32x18", "wait": true})",
+                             "application/json");
+  ASSERT_TRUE(started && started->status == 200);
+  const std::string id = json::parse(started->body)["id"];
+  cases.push_back({"GET", "/api/v1/preview/" + id + "/00.png", "", 404, "n"});
+  cases.push_back({"GET", "/api/v1/preview/" + id + "/+1.png", "", 422, "n"});
+  cases.push_back({"GET", "/api/v1/preview/" + id + "/0.png", "", 200, ""});
+  std::size_t ran = 0;
+  for (const Expect& e : cases) {
+    SCOPED_TRACE(e.method + " " + e.path.substr(0, 120) + " " + e.body.substr(0, 120));
+    auto res = e.method == "GET" ? client.Get(e.path.c_str()) : client.Post(e.path.c_str(), e.body, "application/json");
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, e.status) << res->body.substr(0, 300);
+    EXPECT_LT(res->body.size(), 2000u) << "a refusal echoes no more than the valid form";
+    if (!e.field.empty()) {
+      const json problem = json::parse(res->body, nullptr, false);
+      ASSERT_TRUE(problem.is_object()) << res->body.substr(0, 300);
+      if (e.field != "*") EXPECT_EQ(problem.value("field", ""), e.field) << res->body.substr(0, 300);
+      EXPECT_FALSE(problem.value("field", "").starts_with("/")) << "a dotted path, never a JSON pointer";
+    }
+    ++ran;
+  }
+  // Conditional GET: the PNG's tag, weak, in a list, or "*" is a 304 without a Content-Type line.
+  const std::string png = "/api/v1/preview/" + id + "/0.png";
+  auto first = client.Get(png.c_str());
+  ASSERT_TRUE(first && first->status == 200);
+  const std::string etag = first->get_header_value("ETag");
+  for (const std::string& tags : {etag, "W/" + etag, "\"x\", " + etag, std::string("*"), " \"x\" ,W/" + etag}) {
+    SCOPED_TRACE("If-None-Match: " + tags);
+    auto res = client.Get(png.c_str(), httplib::Headers{{"If-None-Match", tags}});
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 304);
+    EXPECT_FALSE(res->has_header("Content-Type"));
+    ++ran;
+  }
+  for (const std::string& tags : {std::string("\"x\""), std::string("W/\"y\", \"z\""), std::string("garbage")}) {
+    auto res = client.Get(png.c_str(), httplib::Headers{{"If-None-Match", tags}});
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 200) << tags;
+    ++ran;
+  }
+  std::printf("bad-input matrix: %zu issue-17 cases\n", ran);
+}
+
 }  // namespace
 }  // namespace softtune::security

@@ -39,15 +39,15 @@ TEST(ParseProblem, AProblemQuotingInvalidBytesKeepsTheRestOfItsText) {
 
 TEST(ParseProblem, OverflowingNumbersNameTheirWholePath) {
   EXPECT_EQ(parse_problem(R"({"response_frames": 1e999})").field, "response_frames");
-  EXPECT_EQ(parse_problem(R"({"constraint": {"anchor_a": [1, -1e999]}})").field, "constraint.anchor_a[1]");
+  EXPECT_EQ(parse_problem(R"({"constraint": {"anchor_a": [1, -1e999]}})").field, "constraint.anchor_a.1");
   EXPECT_EQ(parse_problem(R"({"constraint": {"body_b": {"mass": 1e400}}})").field, "constraint.body_b.mass");
-  EXPECT_EQ(parse_problem(R"({"a": [[1, 2], {"b": [0, 0, 1e999]}]})").field, "a[1].b[2]");
+  EXPECT_EQ(parse_problem(R"({"a": [[1, 2], {"b": [0, 0, 1e999]}]})").field, "a.1.b.2");
 }
 
 TEST(ParseProblem, DuplicatedKeysNameTheirWholePath) {
   EXPECT_EQ(parse_problem(R"({"fps": 60, "fps": 30})").field, "fps");
   EXPECT_EQ(parse_problem(R"({"constraint": {"body_b": {"mass": 1, "mass": 2}}})").field, "constraint.body_b.mass");
-  EXPECT_EQ(parse_problem(R"({"oscillators": [{"id": "a"}, {"id": "b", "id": "c"}]})").field, "oscillators[1].id");
+  EXPECT_EQ(parse_problem(R"({"oscillators": [{"id": "a"}, {"id": "b", "id": "c"}]})").field, "oscillators.1.id");
 }
 
 }  // namespace

@@ -1,0 +1,29 @@
+#pragma once
+// What a request will cost, estimated from its own fields before any work starts, and the check against
+// the budget (budgets.h). Every contract has one function beside its use case returning a RequestCost
+// (stability_cost.h, accuracy_cost.h, scene_cost.h, verify_cost.h, ...): it counts the work the request
+// asks for (cases x steps, rows x steps, frames x bodies, ...) and prices it with per-unit rates measured
+// on the reference machine, written beside the function; bench/request_cost_bench.cpp keeps them honest.
+// A new contract adds its own X_cost.{h,cpp} and calls require_within_budget() before its work.
+
+#include <string>
+#include <vector>
+
+namespace softtune::app {
+
+struct RequestCost {
+  double cpu_seconds = 0.0;  ///< estimated CPU time on one core of the reference machine, s
+  double peak_bytes = 0.0;   ///< estimated bytes held at the peak (answer tree and text, arrays), B
+  /// Dotted paths of the request fields that drive the cost, the largest driver first ("observe_steps").
+  std::vector<std::string> fields;
+  /// The counted work in words, for the refusal's detail ("17500 cases x 91835 steps").
+  std::string work;
+};
+
+/// Throws codec::Problem 422 when the estimate is over budgets::kCpuSeconds or budgets::kPeakBytes: its
+/// `field` is the first driver, its detail names every driver, the estimate and the budget, and its
+/// extension members carry them as data ("fields", "estimated_cpu_seconds", "budget_cpu_seconds",
+/// "estimated_peak_bytes", "budget_peak_bytes").
+void require_within_budget(const RequestCost& cost);
+
+}  // namespace softtune::app
