@@ -33,6 +33,11 @@ RunTrajectory run_ode(const EngineRun& run) {
   const std::optional<double> cfm = parameter_value(run.parameters, slider ? "dParamStopCFM" : "dParamCFM");
   if (!erp || !cfm) return {};
 
+  // Debian's libode keeps global state (collision and step scratch) that two threads stepping at once
+  // corrupt: two concurrent POST /api/v1/verify with "ode" crashed the server inside libode.so. So one
+  // ODE run at a time; a run is milliseconds.
+  static std::mutex one_run_at_a_time;
+  const std::lock_guard lock(one_run_at_a_time);
   init_ode_for_this_thread();
   dWorldID world = dWorldCreate();
   dWorldSetGravity(world, 0, 0, 0);

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <thread>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -176,6 +178,34 @@ TEST(OdeConformance, RealEngineMatchesTheModel) {
   row("exact vs exact_predicted", exact_vs_predicted);
   row("exact vs request", exact_vs_request);
   EXPECT_GE(cases, 60);
+}
+
+}  // namespace
+}  // namespace softtune::engines
+
+namespace softtune::engines {
+namespace {
+
+// softtune verify serves runs from several HTTP workers at once: two threads running ODE together must
+// each get the trajectory one thread alone gets (two concurrent verify requests once crashed inside libode).
+TEST(OdeConcurrency, RunsOnTwoThreadsAtOnceMatchOneRunAlone) {
+  EngineRun run;
+  run.effective_mass = 2.0;
+  run.parameters = {{"dParamERP", 0.2}, {"dParamCFM", 1e-4}};
+  run.settings = default_settings_of(kOdeModel);
+  run.steps = 200;
+  const RunTrajectory alone = kOdeEngine.run(run);
+  ASSERT_EQ(alone.size(), 201u);
+  std::atomic<int> mismatches{0};
+  auto worker = [&] {
+    for (int i = 0; i < 20; ++i) {
+      if (kOdeEngine.run(run) != alone) ++mismatches;
+    }
+  };
+  std::thread a(worker), b(worker);
+  a.join();
+  b.join();
+  EXPECT_EQ(mismatches.load(), 0);
 }
 
 }  // namespace
