@@ -110,6 +110,9 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["scene_max_body_steps"], softtune::scene::limits::kMaxBodySteps);
   EXPECT_EQ(x["scene_max_bodies"], softtune::scene::limits::kMaxBodies);
   EXPECT_EQ(x["scene_max_joints"], softtune::scene::limits::kMaxJoints);
+  EXPECT_EQ(x["modes_max_dynamic_bodies"], softtune::scene::limits::kMaxModeBodies);
+  EXPECT_EQ(x["modal_max_targets"], softtune::scene::limits::kMaxModeTargets);
+  EXPECT_EQ(x["modal_max_groups"], softtune::scene::limits::kMaxJointGroups);
   EXPECT_EQ(x["simulate_max_frame_stride"], softtune::codec::kMaxFrameStride);
   EXPECT_EQ(x["accuracy_max_step_rates"], softtune::limits::kMaxStepRates);
   EXPECT_EQ(x["accuracy_max_soft_substeps"], softtune::limits::kMaxSoftSubsteps);
