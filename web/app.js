@@ -9,6 +9,7 @@ import { drawError, drawResponse, drawSimulation, drawWorkPrecision, showUnavail
 import { PreviewPlayer } from './preview.js';
 import { showEngines, watchEngineValues } from './engine_table.js';
 import { copyText, fmt, formatPercent, showNumbers, showStability } from './results.js';
+import { modalScene, showModes } from './modes.js';
 import {
   OSCILLATION_ZETA, fromQuery, readForm, stateFromScene, toQuery, tuneRequest, tunedScene, tuningFields,
   writeForm,
@@ -29,6 +30,7 @@ const PREVIEW_SIZE = '480x270';
 
 const channels = { tune: new Latest(), simulate: new Latest(), accuracy: new Latest(), preview: new Latest() };
 let presetScene = null;  // the scene JSON of the picked preset, once loaded
+let pickedMode = null;   // {body, mode} the sliders tune (modes.js), or null: each spring on its own mass
 let pending = 0;
 
 function busy(delta) {
@@ -181,7 +183,7 @@ function unavailable(what) {
 /// The scene to simulate: the picked preset with the page's step and tuning, or a 1-D
 /// oscillator with the effective mass the tune answer computed (from the mass or the 2-D constraint).
 function sceneFor(state, tune) {
-  if (state.preset) return presetScene ? tunedScene(presetScene, state) : { preset: state.preset };
+  if (state.preset) return presetScene ? modalScene(tunedScene(presetScene, state), tuningFields(state), pickedMode) : { preset: state.preset };
   const f = tune.requested?.frequency_hz ?? 0;
   return {
     name: 'custom',
@@ -354,6 +356,7 @@ async function loadPreset(name, adopt) {
     const doc = await tracked(callJson('GET', `api/v1/presets/${encodeURIComponent(name)}`));
     if ($('preset').value !== name) return;
     presetScene = doc.scene ?? doc;
+    loadModes(name);
     // The numbers above tune the body in the controls; the simulation and preview run the preset's own bodies.
     note.textContent = presetScene.description ?? '';
     if (adopt) {
@@ -365,6 +368,23 @@ async function loadPreset(name, adopt) {
   } catch (e) {
     if (!(e instanceof ApiError)) throw e;
     note.textContent = e.message;
+  }
+}
+
+/// The preset's modes (modes.js); picking one makes the sliders tune it.
+async function loadModes(name) {
+  const panel = $('modes-panel');
+  pickedMode = null;
+  if (!panel) return;
+  panel.replaceChildren();
+  if (!presetScene?.bodies?.length || !hasRoute('POST', '/api/v1/modes')) return;
+  try {
+    const answer = await tracked(callJson('POST', 'api/v1/modes', { preset: name }));
+    if ($('preset').value !== name) return;
+    showModes(panel, answer, pickedMode, (target) => { pickedMode = target; scheduleTune(); });
+  } catch (e) {
+    if (!(e instanceof ApiError)) throw e;
+    panel.textContent = e.message;
   }
 }
 
