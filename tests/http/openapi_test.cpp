@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "app/accuracy_app.h"
+#include "app/modes_app.h"
+#include "app/simulate_app.h"
 #include "app/verify_app.h"
 #include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
@@ -183,6 +185,7 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
   const std::string presets = SOFTTUNE_SOURCE_DIR "/presets";
   const std::map<std::string, std::function<json(const json&)>> contracts = {
       {"/api/v1/simulate", [&](const json& q) { return softtune::app::run_simulate(q, presets); }},
+      {"/api/v1/modes", [&](const json& q) { return softtune::app::run_modes(q, presets); }},
       {"/api/v1/accuracy", [](const json& q) { return softtune::app::run_accuracy(q); }},
       {"/api/v1/stability", [](const json& q) { return softtune::app::run_stability(q); }},
       {"/api/v1/verify", [](const json& q) { return softtune::app::run_verify(q); }},
@@ -194,4 +197,8 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
     EXPECT_FALSE(e) << path << ": " << (e ? e->pointer + " " + e->rule : "");
     EXPECT_EQ(conformance_error(path, "post", 200, "application/json", contract(body["example"])), "") << path;
   }
+  // A scene that tunes its modes answers with modal_tuning, documented too.
+  const json vehicle = softtune::app::run_simulate({{"preset", "vehicle"}}, presets);
+  ASSERT_TRUE(vehicle.contains("modal_tuning"));
+  EXPECT_EQ(conformance_error("/api/v1/simulate", "post", 200, "application/json", vehicle), "");
 }
