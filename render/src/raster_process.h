@@ -17,7 +17,7 @@ struct RasterProcessOptions {
   int msaa_samples = 0;
   int llvmpipe_threads = 0;
   /// ms a frame may take before the process is killed and the frame fails.
-  int frame_timeout_ms = 60'000;
+  int frame_timeout_ms = kFrameTimeoutMs;
 };
 
 class RasterProcess {

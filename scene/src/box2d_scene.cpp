@@ -78,29 +78,92 @@ Body2D Box2DScene::core_body(const b2Body* body) {
   return b;
 }
 
-Box2DScene::Box2DScene(const Scene& scene, MassModel model) : scene_(scene) {
-  world_ = std::make_unique<b2World>(vec(scene.world.gravity));
-  world_->SetAllowSleeping(scene.world.allow_sleeping);
-  for (const BodySettings& s : scene.bodies) bodies_.push_back(create_body(*world_, s));
+namespace {
 
-  tunings_.resize(scene.joints.size());
+// Each joint's tuning: its constraint between the bodies as they start, on the scene's mass model.
+std::optional<FieldError> tune_joints(const Scene& scene, const std::vector<b2Body*>& bodies, MassModel model,
+                                      std::vector<JointTuning>& tunings) {
+  tunings.resize(scene.joints.size());
   for (std::size_t i = 0; i < scene.joints.size(); ++i) {
     const JointSettings& j = scene.joints[i];
     const int a = index_of(scene.bodies, j.body_a), b = index_of(scene.bodies, j.body_b);
     Body2D body_a;
     body_a.is_static = true;  // a mouse joint pulls against the ground
-    if (a >= 0) body_a = core_body(bodies_[a]);
-    const Constraint2D c = joint_constraint(j, body_a, core_body(bodies_[b]));
-    if (auto e = tune_joint(j, c, scene.world, model, "joints." + std::to_string(i), tunings_[i])) {
-      error_ = e;
-      return;
+    if (a >= 0) body_a = Box2DScene::core_body(bodies[a]);
+    const Constraint2D c = joint_constraint(j, body_a, Box2DScene::core_body(bodies[b]));
+    if (auto e = tune_joint(j, c, scene.world, model, "joints." + std::to_string(i), tunings[i])) return e;
+  }
+  return std::nullopt;
+}
+
+// The Box2D 2.4 joint for one scene joint, with its tuning's stiffness and damping.
+b2Joint* create_joint(b2World& world, const JointSettings& j, const JointTuning& t, b2Body* body_a, b2Body* body_b) {
+  // Every soft joint def of Box2D 2.4 takes stiffness (N/m, or N m/rad for the weld) and damping.
+  auto create = [&](auto& def) {
+    def.stiffness = static_cast<float>(t.stiffness);
+    def.damping = static_cast<float>(t.damping);
+    def.collideConnected = j.collide_connected;
+    return world.CreateJoint(&def);
+  };
+  switch (j.kind) {
+    case JointKind::distance: {
+      // b2DistanceJointDef (v2.4.1 include/box2d/b2_distance_joint.h): soft when stiffness > 0 and
+      // minLength < maxLength; minLength == maxLength makes it a rigid rod.
+      b2DistanceJointDef d;
+      d.bodyA = body_a;
+      d.bodyB = body_b;
+      d.localAnchorA = body_a->GetLocalPoint(vec(j.anchor_a));
+      d.localAnchorB = body_b->GetLocalPoint(vec(j.anchor_b));
+      d.length = static_cast<float>(j.length.value_or((j.anchor_b - j.anchor_a).norm()));
+      d.minLength = t.tuned ? 0.0f : d.length;
+      d.maxLength = t.tuned ? FLT_MAX : d.length;
+      return create(d);
+    }
+    case JointKind::wheel: {
+      b2WheelJointDef w;
+      w.Initialize(body_a, body_b, vec(j.anchor_b), vec(j.axis.normalized()));
+      w.motorSpeed = static_cast<float>(j.motor_speed);
+      w.maxMotorTorque = static_cast<float>(j.max_motor_torque);
+      w.enableMotor = j.max_motor_torque > 0.0 && j.motor_start_s <= 0.0;
+      return create(w);
+    }
+    case JointKind::weld: {
+      // b2WeldJointDef: stiffness in N m (per rad), damping in N m s; 0 = rigid.
+      b2WeldJointDef w;
+      w.Initialize(body_a, body_b, vec(j.anchor_a));
+      return create(w);
+    }
+    case JointKind::mouse: {
+      // b2MouseJointDef::target is where body B is grabbed (the joint stores it as localAnchorB);
+      // SetTarget then moves the point it is pulled to.
+      b2MouseJointDef m;
+      m.bodyA = body_a;
+      m.bodyB = body_b;
+      m.target = vec(j.anchor_b);
+      m.maxForce = static_cast<float>(j.max_force);
+      auto* mouse = static_cast<b2MouseJoint*>(create(m));
+      mouse->SetTarget(vec(j.target));
+      return mouse;
+    }
+    case JointKind::revolute: {
+      b2RevoluteJointDef r;
+      r.Initialize(body_a, body_b, vec(j.anchor_a));
+      r.collideConnected = j.collide_connected;
+      return world.CreateJoint(&r);
     }
   }
+  return nullptr;
+}
 
+}  // namespace
+
+Box2DScene::Box2DScene(const Scene& scene, MassModel model) : scene_(scene) {
+  world_ = std::make_unique<b2World>(vec(scene.world.gravity));
+  world_->SetAllowSleeping(scene.world.allow_sleeping);
+  for (const BodySettings& s : scene.bodies) bodies_.push_back(create_body(*world_, s));
+  if ((error_ = tune_joints(scene, bodies_, model, tunings_))) return;
   for (std::size_t i = 0; i < scene.joints.size(); ++i) {
     const JointSettings& j = scene.joints[i];
-    const JointTuning& t = tunings_[i];
-    b2Body* body_b = bodies_[index_of(scene.bodies, j.body_b)];
     b2Body* body_a = nullptr;
     if (j.kind == JointKind::mouse) {
       if (!ground_) {
@@ -111,67 +174,7 @@ Box2DScene::Box2DScene(const Scene& scene, MassModel model) : scene_(scene) {
     } else {
       body_a = bodies_[index_of(scene.bodies, j.body_a)];
     }
-    // Every soft joint def of Box2D 2.4 takes stiffness (N/m, or N m/rad for the weld) and damping.
-    auto create = [&](auto& def) {
-      def.stiffness = static_cast<float>(t.stiffness);
-      def.damping = static_cast<float>(t.damping);
-      def.collideConnected = j.collide_connected;
-      return world_->CreateJoint(&def);
-    };
-    b2Joint* joint = nullptr;
-    switch (j.kind) {
-      case JointKind::distance: {
-        // b2DistanceJointDef (v2.4.1 include/box2d/b2_distance_joint.h): soft when stiffness > 0 and
-        // minLength < maxLength; minLength == maxLength makes it a rigid rod.
-        b2DistanceJointDef d;
-        d.bodyA = body_a;
-        d.bodyB = body_b;
-        d.localAnchorA = body_a->GetLocalPoint(vec(j.anchor_a));
-        d.localAnchorB = body_b->GetLocalPoint(vec(j.anchor_b));
-        d.length = static_cast<float>(j.length.value_or((j.anchor_b - j.anchor_a).norm()));
-        d.minLength = t.tuned ? 0.0f : d.length;
-        d.maxLength = t.tuned ? FLT_MAX : d.length;
-        joint = create(d);
-        break;
-      }
-      case JointKind::wheel: {
-        b2WheelJointDef w;
-        w.Initialize(body_a, body_b, vec(j.anchor_b), vec(j.axis.normalized()));
-        w.motorSpeed = static_cast<float>(j.motor_speed);
-        w.maxMotorTorque = static_cast<float>(j.max_motor_torque);
-        w.enableMotor = j.max_motor_torque > 0.0 && j.motor_start_s <= 0.0;
-        joint = create(w);
-        break;
-      }
-      case JointKind::weld: {
-        // b2WeldJointDef: stiffness in N m (per rad), damping in N m s; 0 = rigid.
-        b2WeldJointDef w;
-        w.Initialize(body_a, body_b, vec(j.anchor_a));
-        joint = create(w);
-        break;
-      }
-      case JointKind::mouse: {
-        // b2MouseJointDef::target is where body B is grabbed (the joint stores it as localAnchorB);
-        // SetTarget then moves the point it is pulled to.
-        b2MouseJointDef m;
-        m.bodyA = body_a;
-        m.bodyB = body_b;
-        m.target = vec(j.anchor_b);
-        m.maxForce = static_cast<float>(j.max_force);
-        auto* mouse = static_cast<b2MouseJoint*>(create(m));
-        mouse->SetTarget(vec(j.target));
-        joint = mouse;
-        break;
-      }
-      case JointKind::revolute: {
-        b2RevoluteJointDef r;
-        r.Initialize(body_a, body_b, vec(j.anchor_a));
-        r.collideConnected = j.collide_connected;
-        joint = world_->CreateJoint(&r);
-        break;
-      }
-    }
-    joints_.push_back(joint);
+    joints_.push_back(create_joint(*world_, j, tunings_[i], body_a, bodies_[index_of(scene.bodies, j.body_b)]));
   }
 }
 

@@ -132,6 +132,117 @@ double probe_value(const Scene& scene, const ProbeTarget& t, Box2DScene& world, 
   }
 }
 
+// The stages a scene will run, said before any of them starts.
+void add_planned_stages(const Scene& scene, SceneResult& r) {
+  r.stages.add(Stage::scene_setup);
+  const bool tuned_joint = std::any_of(scene.joints.begin(), scene.joints.end(), [](const auto& j) { return j.tuning.has_value(); });
+  if (tuned_joint || !scene.oscillators.empty()) {
+    r.stages.add(Stage::designer_mapping);
+    if (tuned_joint) r.stages.add(Stage::effective_mass);
+    r.stages.add(Stage::softness);
+  }
+}
+
+// Every 1-D oscillator of the scene on its core integrator; false (r.error set) when one is refused.
+bool run_oscillators(const Scene& scene, SceneResult& r) {
+  r.stages.add(Stage::core_integrator);
+  r.oscillators.resize(scene.oscillators.size());
+  for (std::size_t i = 0; i < scene.oscillators.size(); ++i) {
+    if (auto e = run_oscillator(scene, scene.oscillators[i], r.joints, "oscillators." + std::to_string(i), r.oscillators[i])) {
+      r.error = e;
+      return false;
+    }
+  }
+  return true;
+}
+
+// The Box2D probes' targets, resolved once; oscillator probes are read from their runs instead.
+std::vector<ProbeTarget> resolve_probe_targets(const Scene& scene) {
+  std::vector<ProbeTarget> targets;
+  for (const ProbeSettings& probe : scene.probes) {
+    if (probe.kind == ProbeKind::oscillator) continue;
+    ProbeTarget t{&probe};
+    if (probe.kind == ProbeKind::displacement || probe.kind == ProbeKind::angle) {
+      t.body = find(scene.bodies, probe.body);
+      t.axis = probe.axis.normalized();
+    } else {
+      t.joint = find(scene.joints, probe.joint);
+    }
+    targets.push_back(t);
+  }
+  return targets;
+}
+
+// Steps the Box2D world frame by frame, sampling the probes at t = 0 and after every frame (into
+// `samples`, indexed like scene.probes), and watching for NaN, bodies leaving the world and the largest
+// constraint error; records snapshots when asked.
+void step_world(const Scene& scene, const RunOptions& options, Box2DScene& world, std::vector<std::vector<double>>& samples,
+                SceneResult& r) {
+  r.stages.add(Stage::box2d_step);
+  if (options.record_frames) r.stages.add(Stage::snapshots);
+  std::vector<b2Vec2> centers;
+  std::vector<float> angles;
+  for (const b2Body* b : world.bodies()) {
+    centers.push_back(b->GetWorldCenter());
+    angles.push_back(b->GetAngle());
+  }
+  const std::vector<ProbeTarget> targets = resolve_probe_targets(scene);
+  for (const ProbeTarget& t : targets) samples[t.probe - scene.probes.data()].reserve(r.frames + 1);
+  std::vector<bool> left(scene.bodies.size(), false);
+  const Eigen::Vector4d& bounds = scene.world.bounds;
+  const int stride = std::max(1, options.frame_stride);
+  for (int f = 0; f <= r.frames; ++f) {
+    if (f > 0) world.step_frame(f - 1);
+    for (const b2Body* b : world.bodies()) r.finite = r.finite && body_finite(b);
+    if (!r.finite) break;  // a NaN never reaches a probe series
+    for (const ProbeTarget& t : targets) samples[t.probe - scene.probes.data()].push_back(probe_value(scene, t, world, centers, angles));
+    for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+      r.max_constraint_error = std::max(r.max_constraint_error, joint_error(scene.joints[j], world.joints()[j]));
+    }
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+      const b2Vec2 p = world.bodies()[b]->GetPosition();
+      if (!left[b] && (p.x < bounds[0] || p.y < bounds[1] || p.x > bounds[2] || p.y > bounds[3])) {
+        left[b] = true;
+        r.left_world.push_back(scene.bodies[b].id);
+      }
+    }
+    if (options.record_frames && f % stride == 0) r.snapshots.push_back(snapshot(scene, world, f));
+  }
+}
+
+// Each probe's series fitted (Prony) and set against what was asked of it and what was predicted.
+void fit_probes(const Scene& scene, std::vector<std::vector<double>>& samples, SceneResult& r) {
+  r.stages.add(Stage::response_fit);
+  for (std::size_t p = 0; p < scene.probes.size(); ++p) {
+    const ProbeSettings& probe = scene.probes[p];
+    std::optional<double> f_req = probe.requested_frequency_hz, zeta_req = probe.requested_damping_ratio;
+    std::optional<double> predicted;
+    bool diverged = false;
+    if (probe.kind == ProbeKind::oscillator) {
+      const OscillatorRun& o = r.oscillators[find(scene.oscillators, probe.oscillator)];
+      samples[p] = o.x;
+      diverged = o.diverged_at_s.has_value();
+      if (!f_req) f_req = o.requested_frequency_hz;
+      if (!zeta_req) zeta_req = o.requested_damping_ratio;
+    } else if (!probe.joint.empty() && probe.kind != ProbeKind::joint_error) {  // a rigid row has no request
+      const JointTuning& t = r.joints[find_joint_tuning(r.joints, probe.joint)];
+      if (t.tuned) {
+        if (!f_req) f_req = t.requested_frequency_hz;
+        if (!zeta_req) zeta_req = t.requested_damping_ratio;
+        predicted = t.predicted_frequency_hz;
+      }
+    }
+    ProbeResult pr = measure_probe(probe, std::move(samples[p]), scene.world.fps);
+    pr.requested_frequency_hz = f_req;
+    pr.requested_damping_ratio = zeta_req;
+    pr.predicted_frequency_hz = predicted;
+    pr.diverged = diverged;
+    if (f_req && pr.measured.frequency_hz) pr.frequency_error = *pr.measured.frequency_hz / *f_req - 1.0;
+    if (zeta_req && pr.measured.damping_ratio) pr.damping_ratio_error = *pr.measured.damping_ratio - *zeta_req;
+    r.probes.push_back(std::move(pr));
+  }
+}
+
 }  // namespace
 
 ProbeResult measure_probe(const ProbeSettings& probe, std::vector<double> value, double fps) {
@@ -174,15 +285,9 @@ SceneResult run_scene(const Scene& scene, const RunOptions& options) {
     run.modal_tuning = std::move(modal);
     return run;
   }
-  r.stages.add(Stage::scene_setup);
+  add_planned_stages(scene, r);
   r.frames = frame_count(scene.world);
   r.h = step_size(scene.world.fps, scene.world.substeps);
-  const bool tuned_joint = std::any_of(scene.joints.begin(), scene.joints.end(), [](const auto& j) { return j.tuning.has_value(); });
-  if (tuned_joint || !scene.oscillators.empty()) {
-    r.stages.add(Stage::designer_mapping);
-    if (tuned_joint) r.stages.add(Stage::effective_mass);
-    r.stages.add(Stage::softness);
-  }
 
   // The Box2D world exists only for scenes with bodies: the 1-D oscillator never creates one.
   std::unique_ptr<Box2DScene> world;
@@ -195,94 +300,11 @@ SceneResult run_scene(const Scene& scene, const RunOptions& options) {
     }
     r.joints = world->tunings();
   }
+  if (!scene.oscillators.empty() && !run_oscillators(scene, r)) return r;
 
-  if (!scene.oscillators.empty()) {
-    r.stages.add(Stage::core_integrator);
-    r.oscillators.resize(scene.oscillators.size());
-    for (std::size_t i = 0; i < scene.oscillators.size(); ++i) {
-      if (auto e = run_oscillator(scene, scene.oscillators[i], r.joints, "oscillators." + std::to_string(i), r.oscillators[i])) {
-        r.error = e;
-        return r;
-      }
-    }
-  }
-
-  // Box2D probes are sampled at t = 0 and after every frame.
   std::vector<std::vector<double>> samples(scene.probes.size());
-  if (world) {
-    r.stages.add(Stage::box2d_step);
-    if (options.record_frames) r.stages.add(Stage::snapshots);
-    std::vector<b2Vec2> centers;
-    std::vector<float> angles;
-    for (const b2Body* b : world->bodies()) {
-      centers.push_back(b->GetWorldCenter());
-      angles.push_back(b->GetAngle());
-    }
-    std::vector<ProbeTarget> targets;
-    for (std::size_t p = 0; p < scene.probes.size(); ++p) {
-      const ProbeSettings& probe = scene.probes[p];
-      if (probe.kind == ProbeKind::oscillator) continue;
-      ProbeTarget t{&probe};
-      if (probe.kind == ProbeKind::displacement || probe.kind == ProbeKind::angle) {
-        t.body = find(scene.bodies, probe.body);
-        t.axis = probe.axis.normalized();
-      } else {
-        t.joint = find(scene.joints, probe.joint);
-      }
-      targets.push_back(t);
-      samples[p].reserve(r.frames + 1);
-    }
-    std::vector<bool> left(scene.bodies.size(), false);
-    const Eigen::Vector4d& bounds = scene.world.bounds;
-    const int stride = std::max(1, options.frame_stride);
-    for (int f = 0; f <= r.frames; ++f) {
-      if (f > 0) world->step_frame(f - 1);
-      for (const b2Body* b : world->bodies()) r.finite = r.finite && body_finite(b);
-      if (!r.finite) break;  // a NaN never reaches a probe series
-      for (const ProbeTarget& t : targets) samples[t.probe - scene.probes.data()].push_back(probe_value(scene, t, *world, centers, angles));
-      for (std::size_t j = 0; j < scene.joints.size(); ++j) {
-        r.max_constraint_error = std::max(r.max_constraint_error, joint_error(scene.joints[j], world->joints()[j]));
-      }
-      for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
-        const b2Vec2 p = world->bodies()[b]->GetPosition();
-        if (!left[b] && (p.x < bounds[0] || p.y < bounds[1] || p.x > bounds[2] || p.y > bounds[3])) {
-          left[b] = true;
-          r.left_world.push_back(scene.bodies[b].id);
-        }
-      }
-      if (options.record_frames && f % stride == 0) r.snapshots.push_back(snapshot(scene, *world, f));
-    }
-  }
-
-  r.stages.add(Stage::response_fit);
-  for (std::size_t p = 0; p < scene.probes.size(); ++p) {
-    const ProbeSettings& probe = scene.probes[p];
-    std::optional<double> f_req = probe.requested_frequency_hz, zeta_req = probe.requested_damping_ratio;
-    std::optional<double> predicted;
-    bool diverged = false;
-    if (probe.kind == ProbeKind::oscillator) {
-      const OscillatorRun& o = r.oscillators[find(scene.oscillators, probe.oscillator)];
-      samples[p] = o.x;
-      diverged = o.diverged_at_s.has_value();
-      if (!f_req) f_req = o.requested_frequency_hz;
-      if (!zeta_req) zeta_req = o.requested_damping_ratio;
-    } else if (!probe.joint.empty() && probe.kind != ProbeKind::joint_error) {  // a rigid row has no request
-      const JointTuning& t = r.joints[find_joint_tuning(r.joints, probe.joint)];
-      if (t.tuned) {
-        if (!f_req) f_req = t.requested_frequency_hz;
-        if (!zeta_req) zeta_req = t.requested_damping_ratio;
-        predicted = t.predicted_frequency_hz;
-      }
-    }
-    ProbeResult pr = measure_probe(probe, std::move(samples[p]), scene.world.fps);
-    pr.requested_frequency_hz = f_req;
-    pr.requested_damping_ratio = zeta_req;
-    pr.predicted_frequency_hz = predicted;
-    pr.diverged = diverged;
-    if (f_req && pr.measured.frequency_hz) pr.frequency_error = *pr.measured.frequency_hz / *f_req - 1.0;
-    if (zeta_req && pr.measured.damping_ratio) pr.damping_ratio_error = *pr.measured.damping_ratio - *zeta_req;
-    r.probes.push_back(std::move(pr));
-  }
+  if (world) step_world(scene, options, *world, samples, r);
+  fit_probes(scene, samples, r);
   return r;
 }
 

@@ -18,7 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::size_t kMaxPresetBytes = 4 << 20;
 
 std::string read_text(const fs::path& path, const std::string& what) {
   std::error_code ec;
@@ -32,7 +31,7 @@ std::string read_text(const fs::path& path, const std::string& what) {
 }
 
 bool valid_name(const std::string& name) {
-  if (name.empty() || name.size() > 64 || name == "schema") return false;
+  if (name.empty() || name.size() > kMaxPresetNameLength || name == "schema") return false;
   return std::all_of(name.begin(), name.end(), [](char c) {
     return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
   });

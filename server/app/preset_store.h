@@ -3,11 +3,16 @@
 // schema.json on load. Shared by the CLI (`simulate --preset`, `check`) and the HTTP routes.
 
 #include <nlohmann/json.hpp>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace softtune::app {
+
+/// Largest preset file read (413 above) and longest preset name ([a-z0-9_-], not "schema").
+inline constexpr std::size_t kMaxPresetBytes = std::size_t{4} << 20;
+inline constexpr std::size_t kMaxPresetNameLength = 64;
 
 /// The presets directory: `explicit_dir` if given, else $SOFTTUNE_PRESETS, else "presets" (relative to the
 /// current directory).

@@ -106,7 +106,17 @@ std::string axis_title(const Axis& a) {
   return t;
 }
 
-void panel(std::ostringstream& o, const Plot& p, double y0, int index) {
+// Where one panel's data lands: its axis ranges in data units and its top edge in the SVG.
+struct PanelFrame {
+  const Plot& p;
+  Range rx, ry;
+  double y0, top;
+  double px(double v) const { return kLeft + kPlotWidth * fraction(v, rx, p.x.scale); }
+  double py(double v) const { return top + kPlotHeight * (1.0 - fraction(v, ry, p.y.scale)); }
+};
+
+// The axis ranges cover every usable point of every series and the reference lines.
+PanelFrame panel_frame(const Plot& p, double y0) {
   std::vector<double> xs, ys;
   for (const Series& s : p.series) {
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
@@ -117,27 +127,32 @@ void panel(std::ostringstream& o, const Plot& p, double y0, int index) {
     }
   }
   for (double r : p.y_references) ys.push_back(r);
-  const Range rx = axis_range(p.x, xs), ry = axis_range(p.y, ys);
-  const double top = y0 + kTop;
-  auto px = [&](double v) { return kLeft + kPlotWidth * fraction(v, rx, p.x.scale); };
-  auto py = [&](double v) { return top + kPlotHeight * (1.0 - fraction(v, ry, p.y.scale)); };
+  return {p, axis_range(p.x, xs), axis_range(p.y, ys), y0, y0 + kTop};
+}
 
-  o << "<text x=\"" << num(kLeft + kPlotWidth / 2) << "\" y=\"" << num(y0 + 26)
-    << "\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">" << escape(p.title) << "</text>\n";
-  o << "<clipPath id=\"clip" << index << "\"><rect x=\"" << num(kLeft) << "\" y=\"" << num(top) << "\" width=\""
+// Title, the plot box and the clip path the series are drawn through.
+void draw_box(std::ostringstream& o, const PanelFrame& f, int index) {
+  o << "<text x=\"" << num(kLeft + kPlotWidth / 2) << "\" y=\"" << num(f.y0 + 26)
+    << "\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">" << escape(f.p.title) << "</text>\n";
+  o << "<clipPath id=\"clip" << index << "\"><rect x=\"" << num(kLeft) << "\" y=\"" << num(f.top) << "\" width=\""
     << num(kPlotWidth) << "\" height=\"" << num(kPlotHeight) << "\"/></clipPath>\n";
-  o << "<rect x=\"" << num(kLeft) << "\" y=\"" << num(top) << "\" width=\"" << num(kPlotWidth) << "\" height=\""
+  o << "<rect x=\"" << num(kLeft) << "\" y=\"" << num(f.top) << "\" width=\"" << num(kPlotWidth) << "\" height=\""
     << num(kPlotHeight) << "\" fill=\"#ffffff\" stroke=\"#333333\"/>\n";
+}
 
-  for (double t : ticks(rx, p.x.scale)) {
-    const double x = px(t);
+// Grid lines, tick labels and both axis titles.
+void draw_axes(std::ostringstream& o, const PanelFrame& f) {
+  const Plot& p = f.p;
+  const double top = f.top;
+  for (double t : ticks(f.rx, p.x.scale)) {
+    const double x = f.px(t);
     o << "<line x1=\"" << num(x) << "\" y1=\"" << num(top) << "\" x2=\"" << num(x) << "\" y2=\"" << num(top + kPlotHeight)
       << "\" stroke=\"#e3e3e3\"/>\n";
     o << "<text x=\"" << num(x) << "\" y=\"" << num(top + kPlotHeight + 16)
       << "\" text-anchor=\"middle\" font-size=\"11\">" << tick_label(t) << "</text>\n";
   }
-  for (double t : ticks(ry, p.y.scale)) {
-    const double y = py(t);
+  for (double t : ticks(f.ry, p.y.scale)) {
+    const double y = f.py(t);
     o << "<line x1=\"" << num(kLeft) << "\" y1=\"" << num(y) << "\" x2=\"" << num(kLeft + kPlotWidth) << "\" y2=\"" << num(y)
       << "\" stroke=\"#e3e3e3\"/>\n";
     o << "<text x=\"" << num(kLeft - 6) << "\" y=\"" << num(y + 4) << "\" text-anchor=\"end\" font-size=\"11\">"
@@ -148,12 +163,16 @@ void panel(std::ostringstream& o, const Plot& p, double y0, int index) {
   const double ymid = top + kPlotHeight / 2;
   o << "<text x=\"18\" y=\"" << num(ymid) << "\" text-anchor=\"middle\" font-size=\"13\" transform=\"rotate(-90 18 "
     << num(ymid) << ")\">" << escape(axis_title(p.y)) << "</text>\n";
+}
 
+// Reference lines and every series (lines broken at unusable points, markers), inside the clip path.
+void draw_series(std::ostringstream& o, const PanelFrame& f, int index) {
+  const Plot& p = f.p;
   o << "<g clip-path=\"url(#clip" << index << ")\">\n";
   for (double r : p.y_references) {
     if (!usable(r, p.y.scale)) continue;
-    o << "<line x1=\"" << num(kLeft) << "\" y1=\"" << num(py(r)) << "\" x2=\"" << num(kLeft + kPlotWidth) << "\" y2=\""
-      << num(py(r)) << "\" stroke=\"#555555\" stroke-dasharray=\"6 4\"/>\n";
+    o << "<line x1=\"" << num(kLeft) << "\" y1=\"" << num(f.py(r)) << "\" x2=\"" << num(kLeft + kPlotWidth) << "\" y2=\""
+      << num(f.py(r)) << "\" stroke=\"#555555\" stroke-dasharray=\"6 4\"/>\n";
   }
   for (std::size_t k = 0; k < p.series.size(); ++k) {
     const Series& s = p.series[k];
@@ -173,24 +192,34 @@ void panel(std::ostringstream& o, const Plot& p, double y0, int index) {
         continue;
       }
       // Far outside the box: keep the polyline's coordinates bounded (the clip path hides the rest).
-      const double x = std::clamp(px(s.x[i]), -1e4, 1e4), y = std::clamp(py(s.y[i]), -1e4, 1e4);
+      const double x = std::clamp(f.px(s.x[i]), -1e4, 1e4), y = std::clamp(f.py(s.y[i]), -1e4, 1e4);
       points += num(x) + "," + num(y) + " ";
       if (markers) o << "<circle cx=\"" << num(x) << "\" cy=\"" << num(y) << "\" r=\"3\" fill=\"" << color << "\"/>\n";
     }
     flush();
   }
   o << "</g>\n";
+}
 
-  // Legend: one row per series, to the right of the plot area.
-  double ly = top + 8;
-  for (std::size_t k = 0; k < p.series.size(); ++k) {
+// Legend: one row per series, to the right of the plot area.
+void draw_legend(std::ostringstream& o, const PanelFrame& f) {
+  double ly = f.top + 8;
+  for (std::size_t k = 0; k < f.p.series.size(); ++k) {
     const char* color = kPalette[k % kPaletteSize];
     o << "<line x1=\"" << num(kLegendX) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(kLegendX + 20) << "\" y2=\"" << num(ly)
-      << "\" stroke=\"" << color << "\" stroke-width=\"3\"" << (p.series[k].dashed ? " stroke-dasharray=\"5 3\"" : "") << "/>\n";
+      << "\" stroke=\"" << color << "\" stroke-width=\"3\"" << (f.p.series[k].dashed ? " stroke-dasharray=\"5 3\"" : "") << "/>\n";
     o << "<text x=\"" << num(kLegendX + 26) << "\" y=\"" << num(ly + 4) << "\" font-size=\"11\">"
-      << escape(p.series[k].name) << "</text>\n";
+      << escape(f.p.series[k].name) << "</text>\n";
     ly += 16;
   }
+}
+
+void panel(std::ostringstream& o, const Plot& p, double y0, int index) {
+  const PanelFrame f = panel_frame(p, y0);
+  draw_box(o, f, index);
+  draw_axes(o, f);
+  draw_series(o, f, index);
+  draw_legend(o, f);
 }
 
 }  // namespace

@@ -12,6 +12,9 @@
 
 namespace softtune::render {
 
+/// ms one frame may take in its raster process before the process is killed and the frame fails.
+inline constexpr int kFrameTimeoutMs = 60'000;
+
 struct RendererOptions {
   /// 0: one-pixel alpha fringes on every edge (analytic anti-aliasing, single sample);
   /// 4: 4x multisampling with hard edges. docs/benchmarks.md "Preview frames" gives the measured costs.

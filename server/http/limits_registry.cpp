@@ -1,0 +1,269 @@
+#include "http/limits_registry.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "app/preset_store.h"
+#include "app/preview_service.h"
+#include "codec/json_reader.h"
+#include "codec/scene_codec.h"
+#include "codec/stability_codec.h"
+#include "codec/verify_codec.h"
+#include "http/limits.h"
+#include "softtune/accuracy.h"
+#include "softtune/engines/verify.h"
+#include "softtune/render/frame_pipeline.h"
+#include "softtune/render/renderer.h"
+#include "softtune/scene/limits.h"
+#include "softtune/validation.h"
+
+namespace softtune::http {
+namespace {
+
+namespace hl = http::limits;
+namespace sl = scene::limits;
+namespace vl = softtune::limits;  // core: validation.h and accuracy.h
+
+// A figure as the table writes it: plain below 1e5, else mantissa and exponent ("2e5", "1e-9").
+std::string figure(double v) {
+  char buf[32];
+  const double a = std::fabs(v);
+  if (a != 0.0 && (a >= 1e5 || a < 1e-3)) {
+    const int exponent = static_cast<int>(std::floor(std::log10(a)));
+    std::snprintf(buf, sizeof buf, "%ge%d", v / std::pow(10.0, exponent), exponent);
+  } else {
+    std::snprintf(buf, sizeof buf, "%g", v);
+  }
+  return buf;
+}
+std::string figure(std::size_t v) { return figure(static_cast<double>(v)); }
+std::string figure(int v) { return figure(static_cast<double>(v)); }
+
+std::string bytes(std::size_t n) {
+  if (n % (std::size_t{1} << 20) == 0) return std::to_string(n >> 20) + " MiB";
+  if (n % 1024 == 0) return std::to_string(n / 1024) + " KiB";
+  return std::to_string(n) + " bytes";
+}
+
+std::string millis(long long ms) { return ms % 1000 == 0 ? std::to_string(ms / 1000) + " s" : std::to_string(ms) + " ms"; }
+
+}  // namespace
+
+std::vector<NumericLimit> numeric_limits() {
+  using D = double;
+  return {
+      {"max_body_bytes", D(hl::kMaxBodyBytes)},
+      {"max_header_bytes", D(hl::kMaxHeaderBytes)},
+      {"max_json_depth", D(hl::kMaxJsonDepth)},
+      {"default_threads", D(hl::kDefaultThreads)},
+      {"max_threads", D(hl::kMaxThreads)},
+      {"max_queued_connections", D(hl::kMaxQueuedConnections)},
+      {"max_open_connections", D(hl::kMaxOpenConnections)},
+      {"request_read_timeout_ms", D(hl::kRequestReadTimeout.count())},
+      {"write_timeout_ms", D(hl::kWriteTimeout.count())},
+      {"keep_alive_timeout_ms", D(hl::kKeepAliveTimeout.count())},
+      {"keep_alive_max_requests", D(hl::kKeepAliveMaxRequests)},
+      {"response_cache_entries", D(hl::kResponseCacheEntries)},
+      {"response_cache_bytes", D(hl::kResponseCacheBytes)},
+      {"max_header_line_bytes", D(hl::kMaxHeaderLineBytes)},
+      {"scene_max_duration_s", sl::kMaxDurationS},
+      {"scene_max_steps", sl::kMaxSceneSteps},
+      {"scene_max_body_steps", sl::kMaxBodySteps},
+      {"scene_max_bodies", D(sl::kMaxBodies)},
+      {"scene_max_joints", D(sl::kMaxJoints)},
+      {"modes_max_dynamic_bodies", D(sl::kMaxModeBodies)},
+      {"modal_max_targets", D(sl::kMaxModeTargets)},
+      {"modal_max_groups", D(sl::kMaxJointGroups)},
+      {"simulate_max_frame_stride", D(codec::kMaxFrameStride)},
+      {"accuracy_max_step_rates", D(vl::kMaxStepRates)},
+      {"accuracy_max_soft_substeps", D(vl::kMaxSoftSubsteps)},
+      {"accuracy_max_timing_repeats", D(vl::kMaxTimingRepeats)},
+      {"accuracy_max_steps_per_row", vl::kMaxAccuracyStepsPerRow},
+      {"stability_max_grid_entries", D(codec::kMaxGridEntries)},
+      {"stability_max_cases", D(codec::kMaxCases)},
+      {"stability_max_observe_steps", D(codec::kMaxObserveSteps)},
+      {"max_preview_frames", D(render::caps::kMaxFrames)},
+      {"max_preview_width", D(render::caps::kMaxWidth)},
+      {"max_preview_height", D(render::caps::kMaxHeight)},
+  };
+}
+
+namespace {
+
+// Connections, heads, bodies and threads: the HTTP service's own limits.
+std::vector<LimitRow> transport_rows() {
+  return {
+      {"request body", bytes(hl::kMaxBodyBytes) + ", by `Content-Length`", "`server/http/limits.h` `kMaxBodyBytes`",
+       "413 before the body is read; the connection closes"},
+      {"chunked or compressed bodies",
+       "not accepted: `Content-Length` only, no `Transfer-Encoding`, no `Content-Encoding`",
+       "`server/http/request_policy.cpp`",
+       "411 / 415 before any byte of the body is read: a 100 MB chunked body or a gzip bomb is never buffered or "
+       "inflated"},
+      {"request line, one header line", bytes(hl::kMaxHeaderLineBytes) + " (cpp-httplib 0.11.4's compiled-in limit)",
+       "`server/http/limits.h` `kMaxHeaderLineBytes`",
+       "414 for a request line, 431 for a header line; the connection closes"},
+      {"request line plus headers", bytes(hl::kMaxHeaderBytes) + " in total", "`server/http/limits.h` `kMaxHeaderBytes`",
+       "431; the connection closes (10 000 headers end here)"},
+      {"reading one request",
+       millis(hl::kRequestReadTimeout.count()) + " for line, headers and body together, however slowly they trickle",
+       "`server/http/limits.h` `kRequestReadTimeout`",
+       "408 when the head is incomplete, else the connection closes (slowloris clients are cut off)"},
+      {"writing a response", millis(hl::kWriteTimeout.count()) + " without progress",
+       "`server/http/limits.h` `kWriteTimeout`", "the connection closes"},
+      {"idle keep-alive connection",
+       millis(hl::kKeepAliveTimeout.count()) + " idle, at most " + figure(hl::kKeepAliveMaxRequests) +
+           " requests per connection",
+       "`server/http/limits.h` `kKeepAliveTimeout`, `kKeepAliveMaxRequests`",
+       "the connection closes (`Connection: close` on the last answer)"},
+      {"worker threads",
+       figure(hl::kDefaultThreads) + " by default, 1 to " + figure(hl::kMaxThreads) + " (`--threads`); one per request being served",
+       "`server/http/limits.h` `kDefaultThreads`, `kMaxThreads`", "complete requests wait in the queue"},
+      {"requests waiting for a worker", figure(hl::kMaxQueuedConnections), "`server/http/limits.h` `kMaxQueuedConnections`",
+       "503 at once with `Retry-After: 1`"},
+      {"open connections",
+       figure(hl::kMaxOpenConnections) +
+           " (request heads arriving, idle keep-alive, draining after a refusal); none of them holds a worker. The "
+           "server raises its soft file-descriptor limit to fit them, and holds fewer if the hard limit is lower",
+       "`server/http/limits.h` `kMaxOpenConnections`",
+       "one that is draining is closed, or else the one that has waited longest, to admit the new one"},
+  };
+}
+
+// What a request may hold: JSON, names, and each contract's values.
+std::vector<LimitRow> request_rows() {
+  return {
+      {"JSON nesting", figure(codec::kMaxJsonDepth) + " levels", "`server/codec/json_reader.h` `kMaxJsonDepth`",
+       "400 (nlohmann's recursive dump and copy would crash on deep documents)"},
+      {"JSON numbers", "finite doubles", "`server/codec/json_reader.cpp`",
+       "400 naming the key (`1e999`); `NaN`, `Infinity` as bare words are malformed JSON (400), as strings a wrong "
+       "type (422)"},
+      {"duplicated keys", "none", "`server/codec/json_reader.cpp`", "400 naming the key"},
+      {"unknown fields", "none", "`ObjectReader::finish`, `server/codec/json_reader.h`", "422 naming the dotted field"},
+      {"paths", "no `..`, `%2e%2e`, `..%2f`, `%00`, backslashes or non-UTF-8 after decoding; static files only under `web/`",
+       "`server/http/static_files.cpp`, `server/http/router.cpp`", "400 / 404"},
+      {"preset names", "`[a-z0-9_-]`, 1 to " + figure(app::kMaxPresetNameLength) + " characters, not `schema`",
+       "`server/app/preset_store.h` `kMaxPresetNameLength`",
+       "422 naming `name` (GET) or `preset` (simulate, preview); 404 for a well-formed name with no preset"},
+      {"preset files", bytes(app::kMaxPresetBytes), "`server/app/preset_store.h` `kMaxPresetBytes`",
+       "413 naming the file"},
+      {"tune request values",
+       "fps " + figure(vl::kMinFps) + " to " + figure(vl::kMaxFps) + " Hz, substeps 1 to " + figure(vl::kMaxSubsteps) +
+           ", fps x substeps <= " + figure(vl::kMaxStepRate) + ", response_frames " + figure(vl::kMinFrames) + " to " +
+           figure(vl::kMaxFrames) + ", frequency 0 to " + figure(vl::kMaxFrequencyHz) + " Hz, damping ratio 0 to " +
+           figure(vl::kMaxDampingRatio) + ", masses " + figure(vl::kMinMass) + " to " + figure(vl::kMaxMass) +
+           " kg, inertias " + figure(vl::kMinInertia) + " to " + figure(vl::kMaxInertia) +
+           " kg m^2, coordinates within " + figure(vl::kMaxCoordinate) + " m, axis longer than " +
+           figure(vl::kMinAxisLength) + " m",
+       "`core/include/softtune/validation.h`",
+       "422 naming the field; a frequency above Nyquist in exact mode is clamped with a warning"},
+      {"engine settings", "each engine model's settings: its own range, integer or choice",
+       "the model's `SettingSpec`s, `core/src/engines/<engine>.cpp`",
+       "422 naming `engine_settings.<engine>.<setting>`"},
+      {"scenes",
+       "gravity <= " + figure(sl::kMaxGravity) + " m/s^2 per component, fps <= " + figure(sl::kMaxSceneFps) +
+           " Hz, substeps <= " + figure(sl::kMaxSceneSubsteps) + ", iterations <= " + figure(sl::kMaxIterations) +
+           ", duration <= " + figure(sl::kMaxDurationS) + " s, frames x substeps <= " + figure(sl::kMaxSceneSteps) +
+           ", frames x substeps x (bodies + joints) <= " + figure(sl::kMaxBodySteps) + ", " + figure(sl::kMaxBodies) +
+           " bodies, " + figure(sl::kMaxJoints) + " joints, " + figure(sl::kMaxOscillators) + " oscillators, " +
+           figure(sl::kMaxProbes) + " probes, coordinates within " + figure(sl::kMaxWorldCoordinate) + " m, sizes " +
+           figure(sl::kMinSize) + " to " + figure(sl::kMaxSize) + " m, joint lengths and polygon edges >= " +
+           figure(sl::kMinJointLength * 1000.0) + " mm, body masses " + figure(sl::kMinBodyMass) + " to " +
+           figure(sl::kMaxBodyMass) + " kg, densities " + figure(sl::kMinDensity) + " to " + figure(sl::kMaxDensity) +
+           " kg/m^2, speeds <= " + figure(sl::kMaxSpeed) + " m/s, angular speeds <= " + figure(sl::kMaxAngularSpeed) +
+           " rad/s, " + figure(sl::kMaxPolygonVertices) + " polygon vertices, ids <= " + figure(sl::kMaxIdLength) +
+           " characters",
+       "`scene/include/softtune/scene/limits.h`", "422 naming the field"},
+      {"modes and modal tuning",
+       "at most " + figure(sl::kMaxModeBodies) + " dynamic bodies, at_s within [0, duration_s], " +
+           figure(sl::kMaxModeTargets) + " targets, " + figure(sl::kMaxJointGroups) + " joint groups",
+       "`scene/include/softtune/scene/limits.h` `kMaxModeBodies`, `kMaxModeTargets`, `kMaxJointGroups`",
+       "422 naming the field before any Box2D step"},
+      {"simulate options", "frame_stride 1 to " + figure(codec::kMaxFrameStride),
+       "`server/codec/scene_codec.h` `kMaxFrameStride`", "422 naming the field"},
+      {"accuracy request",
+       figure(vl::kMaxStepRates) + " step rates, " + figure(vl::kMaxSoftSubsteps) + " soft_substeps entries of 1 to " +
+           figure(vl::kMaxSoftSubstepCount) + ", error_budget " + figure(vl::kMinErrorBudget) + " to " +
+           figure(vl::kMaxErrorBudget) + ", timing_repeats 1 to " + figure(vl::kMaxTimingRepeats) +
+           ", fps x substeps x duration_s <= " + figure(vl::kMaxAccuracyStepsPerRow) + " steps per row",
+       "`core/include/softtune/accuracy.h` (`softtune::limits`)", "422 naming the field"},
+      {"stability request",
+       figure(codec::kMaxGridEntries) + " entries per grid list, " + figure(codec::kMaxCases) +
+           " cases (product of the lists), observe_steps " + figure(codec::kMinObserveSteps) + " to " +
+           figure(codec::kMaxObserveSteps) + ", frequency ratio <= " + figure(codec::kMaxFrequencyRatio) + ", step " +
+           figure(codec::kMinStep) + " to " + figure(codec::kMaxStep) + " s, stiffness <= " +
+           figure(codec::kMaxStiffness) + " N/m, mass ratio <= " + figure(codec::kMaxMassRatio) +
+           ", chain iterations <= " + figure(codec::kMaxChainIterations),
+       "`server/codec/stability_codec.h`", "422 naming the field"},
+      {"verify request",
+       "at most " + figure(codec::kVerifyMaxEngines) + " engine names; duration_s in (0, " +
+           figure(engines::kVerifyMaxDuration) + "] s and duration x fps x substeps <= " +
+           figure(engines::kVerifyMaxSteps) + " steps per run; x0 in (0, 1] m",
+       "`server/codec/verify_codec.h` `kVerifyMaxEngines`; `engines/include/softtune/engines/verify.h` "
+       "`kVerifyMaxDuration`, `kVerifyMaxSteps`; x0 in `server/codec/verify_codec.cpp`",
+       "422 naming the field; each trajectory in the answer is strided to at most " +
+           figure(codec::kVerifyMaxPlotSamples) + " samples (`kVerifyMaxPlotSamples`)"},
+  };
+}
+
+// Preview frames: sizes, waiters, raster processes and the caches.
+std::vector<LimitRow> preview_rows() {
+  const render::PipelineOptions pipeline;
+  return {
+      {"preview",
+       figure(render::caps::kMinSide) + " to " + figure(render::caps::kMaxWidth) + " x " +
+           figure(render::caps::kMaxHeight) + " px, 1 to " + figure(render::caps::kMaxFrames) + " frames",
+       "`render/include/softtune/render/frame_pipeline.h` (`render::caps`)",
+       "422 naming `size` / `frames`; more frames than a scene runs are clamped with a `frames_clamped` warning"},
+      {"requests waiting for preview frames", figure(app::kMaxPreviewWaiters) + " at a time (`\"wait\": true`)",
+       "`server/app/preview_service.h` `kMaxPreviewWaiters`",
+       "answered at once as with `\"wait\": false` (status `rendering`, `progress_url`) with a `wait_declined` "
+       "warning; the render goes on. Without the cap, 16 waiting previews held all " + figure(hl::kDefaultThreads) +
+           " worker threads and health went unanswered for 4 s"},
+      {"one preview frame", millis(render::kFrameTimeoutMs) + " in its raster process",
+       "`render/include/softtune/render/renderer.h` `kFrameTimeoutMs`",
+       "the raster process is killed and the preview fails with a 500 problem saying so; the next frame starts a new "
+       "process"},
+      {"raster processes",
+       "one per render worker (" + figure(pipeline.workers) + "), started on the first frame, ended after " +
+           millis(pipeline.release_renderer_after_ms) + " without one",
+       "`render/include/softtune/render/frame_pipeline.h` `PipelineOptions`",
+       "a raster process that dies fails its frame (500 naming the signal), not the server"},
+      {"caches",
+       "tune responses " + figure(hl::kResponseCacheEntries) + " entries / " + bytes(hl::kResponseCacheBytes) +
+           " (a canonical request and each spelling of it seen are an entry each, sharing the body); preview PNGs " +
+           bytes(pipeline.cache_bytes) + " (counted by the strings' capacity: each PNG is shrunk to its bytes)",
+       "`server/http/limits.h` `kResponseCacheEntries`, `kResponseCacheBytes`; `frame_pipeline.h` "
+       "`PipelineOptions::cache_bytes`",
+       "least recently used evicted"},
+  };
+}
+
+}  // namespace
+
+std::vector<LimitRow> limit_rows() {
+  std::vector<LimitRow> rows = transport_rows();
+  for (auto part : {request_rows(), preview_rows()}) rows.insert(rows.end(), part.begin(), part.end());
+  return rows;
+}
+
+nlohmann::json limits_json() {
+  nlohmann::json out = nlohmann::json::object();
+  for (const NumericLimit& l : numeric_limits()) {
+    const auto whole = static_cast<long long>(l.value);
+    if (static_cast<double>(whole) == l.value) {
+      out[std::string(l.key)] = whole;
+    } else {
+      out[std::string(l.key)] = l.value;
+    }
+  }
+  return out;
+}
+
+std::string limits_table_markdown() {
+  std::string out = "| Cap | Value | Defined in | Above it |\n| --- | --- | --- | --- |\n";
+  for (const LimitRow& r : limit_rows()) out += "| " + r.cap + " | " + r.value + " | " + r.defined_in + " | " + r.above + " |\n";
+  return out;
+}
+
+}  // namespace softtune::http
