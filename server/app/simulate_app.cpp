@@ -1,5 +1,6 @@
 #include "app/simulate_app.h"
 
+#include "app/check_app.h"
 #include "app/preset_store.h"
 #include "codec/json_writer.h"
 #include "codec/problem.h"
@@ -73,19 +74,8 @@ json check_preset(const json& preset) {
   for (const SceneResult& run : check.runs) {
     if (run.error) throw_field_error(*run.error);
   }
-  json expectations = json::array();
-  for (const ExpectationResult& e : check.results) {
-    expectations.push_back({{"probe", e.expectation.probe},
-                            {"metric", metric_name(e.expectation.metric)},
-                            {"mass_model", mass_model_name(e.mass_model)},
-                            {"value", number_or_null(e.value)},
-                            {"min", number_or_null(e.expectation.min)},
-                            {"max", number_or_null(e.expectation.max)},
-                            {"passed", e.passed},
-                            {"note", e.expectation.note}});
-  }
   return {{"name", scene.name}, {"passed", check.passed}, {"stages", stages_json(check.runs.front().stages)},
-          {"expectations", std::move(expectations)}};
+          {"expectations", expectations_json(check)}};
 }
 
 }  // namespace softtune::app

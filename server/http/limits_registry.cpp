@@ -3,6 +3,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/check_app.h"
+#include "app/check_cost.h"
+#include "app/check_request.h"
 #include "app/preset_store.h"
 #include "app/preview_service.h"
 #include "codec/json_reader.h"
@@ -85,6 +88,10 @@ std::vector<NumericLimit> numeric_limits() {
       {"max_preview_frames", D(render::caps::kMaxFrames)},
       {"max_preview_width", D(render::caps::kMaxWidth)},
       {"max_preview_height", D(render::caps::kMaxHeight)},
+      {"check_max_work", app::kMaxCheckWork},
+      {"check_max_presets", D(app::kMaxCheckPresets)},
+      {"check_max_scenes", D(app::kMaxCheckScenes)},
+      {"check_max_rates", D(sl::kMaxRates)},
   };
 }
 
@@ -179,6 +186,15 @@ std::vector<LimitRow> request_rows() {
            figure(sl::kMaxModeTargets) + " targets, " + figure(sl::kMaxJointGroups) + " joint groups",
        "`scene/include/softtune/scene/limits.h` `kMaxModeBodies`, `kMaxModeTargets`, `kMaxJointGroups`",
        "422 naming the field before any Box2D step"},
+      {"check request",
+       figure(app::kMaxCheckPresets) + " preset names, " + figure(app::kMaxCheckScenes) + " inline scenes, " +
+           figure(sl::kMaxRates) + " entries each of fps, substeps (and of a preset's rates), shard I/N with N <= " +
+           figure(app::kMaxShards) + "; estimated work, frames x substeps x (bodies + joints) summed over every case, <= " +
+           figure(app::kMaxCheckWork) + " body-steps (about 2 s of one core); `softtune check -j` 1 to " +
+           figure(app::kMaxCheckJobs),
+       "`server/app/check_request.h`, `server/app/check_cost.h` `kMaxCheckWork`, `server/app/check_app.h`, "
+       "`scene/include/softtune/scene/limits.h` `kMaxRates`",
+       "422 naming the field; above the work budget 422 naming `presets, scenes, fps, substeps` before any step"},
       {"simulate options", "frame_stride 1 to " + figure(codec::kMaxFrameStride),
        "`server/codec/scene_codec.h` `kMaxFrameStride`", "422 naming the field"},
       {"accuracy request",

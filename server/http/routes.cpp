@@ -6,6 +6,7 @@
 #include "app/tune_app.h"
 #include "codec/tune_codec.h"
 #include "http/capability_routes.h"
+#include "http/check_routes.h"
 #include "http/openapi.h"
 #include "http/preview_routes.h"
 #include "http/static_files.h"
@@ -85,6 +86,7 @@ std::vector<Route> service_routes() {
       {"POST", "/api/v1/modes", [](const HttpRequest& request, Service& service) {
          return json_response(app::run_modes(codec::parse_json(request.body), service.config().presets_dir));
        }},
+      {"POST", "/api/v1/check", check},
       {"POST", "/api/v1/verify", json_contract(app::run_verify, "")},
       {"GET", "/api/v1/presets", presets},
       {"GET", "/api/v1/presets/{name}", preset},

@@ -12,6 +12,8 @@
 #include "app/accuracy_app.h"
 #include "app/modes_app.h"
 #include "app/simulate_app.h"
+#include "app/check_cost.h"
+#include "app/check_request.h"
 #include "app/verify_app.h"
 #include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
@@ -130,7 +132,11 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["stability_max_grid_entries"], softtune::codec::kMaxGridEntries);
   EXPECT_EQ(x["stability_max_cases"], softtune::codec::kMaxCases);
   EXPECT_EQ(x["stability_max_observe_steps"], softtune::codec::kMaxObserveSteps);
-  EXPECT_EQ(x.size(), 33u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x["check_max_work"], softtune::app::kMaxCheckWork);
+  EXPECT_EQ(x["check_max_presets"], softtune::app::kMaxCheckPresets);
+  EXPECT_EQ(x["check_max_scenes"], softtune::app::kMaxCheckScenes);
+  EXPECT_EQ(x["check_max_rates"], softtune::scene::limits::kMaxRates);
+  EXPECT_EQ(x.size(), 37u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {
@@ -196,6 +202,7 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
       {"/api/v1/accuracy", [](const json& q) { return softtune::app::run_accuracy(q); }},
       {"/api/v1/stability", [](const json& q) { return softtune::app::run_stability(q); }},
       {"/api/v1/verify", [](const json& q) { return softtune::app::run_verify(q); }},
+      {"/api/v1/check", [&](const json& q) { return softtune::app::run_check_request(q, presets).json; }},
   };
   for (const auto& [path, contract] : contracts) {
     const json& body = openapi_document()["paths"][path]["post"]["requestBody"]["content"]["application/json"];

@@ -24,5 +24,6 @@ inline constexpr std::size_t kMaxBodies = 500, kMaxJoints = 500, kMaxOscillators
 inline constexpr std::size_t kMaxIdLength = 64;
 inline constexpr std::size_t kMaxModeTargets = 16, kMaxJointGroups = 16;
 /// Dynamic bodies a linearisation takes (3 coordinates each): the SVD and the 6n x 6n eigenproblem grow as n^3.
-inline constexpr std::size_t kMaxModeBodies = 100;  ///< modal_tuning: each target and group costs solve work
+inline constexpr std::size_t kMaxModeBodies = 100;
+inline constexpr std::size_t kMaxRates = 16;             ///< entries of rates.fps, rates.substeps and an expectation's fps, substeps
 }  // namespace softtune::scene::limits
