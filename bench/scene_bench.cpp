@@ -20,7 +20,8 @@ namespace {
 using namespace softtune;
 using namespace softtune::scene;
 
-const char* const kPresets[] = {"oscillator", "buddhas", "mouse", "stiff", "chain", "bridge", "vehicle"};
+// vehicle_per_spring, not vehicle: the raw loop cannot repeat the modal solve the vehicle runs first.
+const char* const kPresets[] = {"oscillator", "buddhas", "mouse", "stiff", "chain", "bridge", "vehicle_per_spring"};
 
 Scene load(const std::string& name) { return codec::decode_scene(app::load_preset(SOFTTUNE_PRESETS_DIR, name)); }
 

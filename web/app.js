@@ -20,8 +20,10 @@ import { chainField, showChain } from './chain.js';
 import { copyText, fmt, showNumbers, showStability, showSummary } from './results.js';
 import { probeUnit, showJoints, showProbes, tunedJoints } from './simulate_panel.js';
 import { identifyOverlay, installIdentify, showIdentified } from './identify.js';
+import { modalScene, showModes } from './modes.js';
 import {
-  fromQuery, presetRequest, previewRequest, readForm, stateFromScene, toQuery, tuneRequest, tuningFields, writeForm,
+  fromQuery, presetRequest, previewRequest, readForm, sceneTuning, stateFromScene, toQuery, tuneRequest, tuningFields,
+  writeForm,
 } from './state.js';
 
 const form = document.getElementById('controls');
@@ -49,6 +51,7 @@ const channels = { tune: new Latest(), simulate: new Latest(), accuracy: new Lat
 let words = {};          // oscillation word -> damping ratio, from the server's OpenAPI document
 let presetScene = null;  // the scene document of the picked preset, once loaded
 let presetJoints = null; // a Box2D preset's tuned joints (their masses come from its bodies), once simulated
+let pickedMode = null;   // {body, mode} the sliders tune (modes.js), or null: each spring on its own mass
 let pending = 0;
 
 function busy(delta) {
@@ -304,9 +307,13 @@ function unavailable(what) {
   return `${what} is not available on this server.`;
 }
 
-/// What to simulate: the picked preset tuned by the page (server/app/scene_tuning.h), or a 1-D oscillator
-/// with the effective mass the tune answer computed (from the mass or the 2-D constraint).
+/// What to simulate: the picked preset tuned by the page (server/app/scene_tuning.h), with the picked mode
+/// as the target of its tuned joints when there is one (modes.js), or a 1-D oscillator with the effective
+/// mass the tune answer computed (from the mass or the 2-D constraint).
 function simulateRequest(state, tune) {
+  if (state.preset && pickedMode && presetScene) {
+    return { scene: modalScene(presetScene, tuningFields(state), pickedMode), tuning: sceneTuning(state) };
+  }
   if (state.preset) return presetRequest(state);
   const f = tune.requested?.frequency_hz ?? 0;
   return {
@@ -473,6 +480,7 @@ async function loadPreset(name, adopt) {
     const { scene, note } = await tracked(fetchPresetScene(name));
     if ($('preset').value !== name) return;
     presetScene = scene;
+    if (scene) loadModes(name);
     $('preset-note').textContent = scene?.description ?? note;
     if (scene) urlDefaults = { ...DEFAULTS, ...stateFromScene(scene, words) };
     writeForm(form, adopt ? { ...urlDefaults, preset: name } : fromQuery(location.search, urlDefaults, words));
@@ -483,6 +491,23 @@ async function loadPreset(name, adopt) {
   syncControls();
   if (adopt) updateUrl(true);
   scheduleTune();
+}
+
+/// The preset's modes (modes.js); picking one makes the sliders tune it.
+async function loadModes(name) {
+  const panel = $('modes-panel');
+  pickedMode = null;
+  if (!panel) return;
+  panel.replaceChildren();
+  if (!presetScene?.bodies?.length || !hasRoute('POST', '/api/v1/modes')) return;
+  try {
+    const answer = await tracked(callJson('POST', 'api/v1/modes', { preset: name }));
+    if ($('preset').value !== name) return;
+    showModes(panel, answer, pickedMode, (target) => { pickedMode = target; scheduleTune(); });
+  } catch (e) {
+    if (!(e instanceof ApiError)) throw e;
+    panel.textContent = e.message;
+  }
 }
 
 // ---- start ----------------------------------------------------------------------------------------

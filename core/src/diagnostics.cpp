@@ -24,6 +24,10 @@ std::string_view stage_name(Stage s) {
     case Stage::snapshots: return "snapshots";
     case Stage::response_fit: return "response_fit";
     case Stage::expectations: return "expectations";
+    case Stage::settle: return "settle";
+    case Stage::linearise: return "linearise";
+    case Stage::modes: return "modes";
+    case Stage::modal_solve: return "modal_solve";
     case Stage::render: return "render";
     case Stage::png_encode: return "png_encode";
   }

@@ -271,6 +271,21 @@ SceneResult run_scene(const Scene& scene, const RunOptions& options) {
     r.error = e;
     return r;
   }
+  // Modes first (modal_tuning.h): the run is then of the scene with the solved springs in its joints.
+  if (scene.modal_tuning) {
+    Scene tuned;
+    ModalTuningResult modal;
+    if (auto e = tune_modes(scene, r.mass_model, modal, tuned, r.stages)) {
+      r.error = e;
+      return r;
+    }
+    SceneResult run = run_scene(tuned, options);
+    run.stages.items.erase(run.stages.items.begin());  // its own validate: ran above
+    r.stages.append(run.stages);
+    run.stages = r.stages;
+    run.modal_tuning = std::move(modal);
+    return run;
+  }
   add_planned_stages(scene, r);
   r.frames = frame_count(scene.world);
   r.h = step_size(scene.world.fps, scene.world.substeps);

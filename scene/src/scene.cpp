@@ -1,4 +1,5 @@
 #include "softtune/scene/scene.h"
+#include "softtune/scene/modal_tuning.h"
 
 #include <algorithm>
 #include <cmath>
@@ -288,7 +289,7 @@ std::optional<FieldError> validate_scene(const Scene& s) {
   for (std::size_t i = 0; i < s.expectations.size(); ++i) {
     if (auto e = check_expectation(s, s.expectations[i], at("expectations", i))) return e;
   }
-  return std::nullopt;
+  return validate_modal_tuning(s);
 }
 
 std::string_view joint_kind_name(JointKind k) {

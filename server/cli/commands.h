@@ -13,6 +13,7 @@ int run_serve(const Args& args);
 int run_accuracy(const Args& args);
 int run_stability(const Args& args);
 int run_simulate(const Args& args);
+int run_modes(const Args& args);
 int run_check(const Args& args);
 int run_render(const Args& args);
 int run_verify(const Args& args);

@@ -18,6 +18,7 @@ constexpr Command kCommands[] = {
     {"accuracy", "work-precision report: error against CPU time per method, and a recommendation", softtune::cli::run_accuracy},
     {"stability", "extreme-case sweep: predicted against observed stability, mass-ratio chain", softtune::cli::run_stability},
     {"simulate", "run a scene or preset in Box2D / the core integrators, measure the achieved response", softtune::cli::run_simulate},
+    {"modes", "the modes of a scene or preset about its rest state: frequency, damping, shape", softtune::cli::run_modes},
     {"check", "run every preset's expectations (the automated preset test)", softtune::cli::run_check},
     {"render", "preview frames of a preset -> DIR/frame_0000.png ... and filmstrip.png", softtune::cli::run_render},
     {"verify", "run a tuning in the real engines linked in process: measured against predicted", softtune::cli::run_verify},

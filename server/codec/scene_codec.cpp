@@ -4,6 +4,7 @@
 
 #include "codec/json_reader.h"
 #include "codec/json_writer.h"
+#include "codec/modes_codec.h"
 #include "codec/list_reader.h"
 #include "codec/problem.h"
 #include "codec/tune_codec.h"
@@ -33,9 +34,12 @@ std::string required_string(ObjectReader& r, std::string_view key) {
 // object carries none of them: a rigid joint.
 constexpr const char* kDesignerFields[] = {"response_frames", "basis_fps", "frequency_hz", "oscillation", "damping_ratio", "mode"};
 
-std::optional<TuneRequest> read_designer_fields(ObjectReader& r, const std::string& path) {
+}  // namespace
+
+std::optional<TuneRequest> read_designer_fields(ObjectReader& r, const std::string& path, bool with_mode) {
   json designer = json::object();
   for (const char* key : kDesignerFields) {
+    if (!with_mode && std::string_view(key) == "mode") continue;
     if (const json* v = r.raw(key)) designer[key] = *v;
   }
   if (designer.empty()) return std::nullopt;
@@ -51,6 +55,8 @@ std::optional<TuneRequest> read_designer_fields(ObjectReader& r, const std::stri
     throw invalid_field(path + "." + p.field, p.detail);
   }
 }
+
+namespace {
 
 template <typename Read>
 void read_list(ObjectReader& parent, std::string_view key, Read read) {
@@ -302,6 +308,10 @@ Scene decode_scene(const json& doc) {
   read_list(r, "oscillators", [&](ObjectReader& o, const std::string& path) { s.oscillators.push_back(read_oscillator(o, path)); });
   read_list(r, "probes", [&](ObjectReader& o, const std::string&) { s.probes.push_back(read_probe(o)); });
   read_list(r, "expectations", [&](ObjectReader& o, const std::string&) { s.expectations.push_back(read_expectation(o)); });
+  if (auto m = r.object("modal_tuning")) {
+    s.modal_tuning = read_modal_tuning(*m);
+    m->finish();
+  }
   if (auto rates = r.object("rates")) {
     read_rate_lists(*rates, s.rates.fps, s.rates.substeps);
     rates->finish();
@@ -338,6 +348,7 @@ json encode_scene_result(const Scene& scene, const SceneResult& r) {
       {"camera", {{"center", vec2_json(scene.camera.center)}, {"width_m", number_or_null(scene.camera.width_m)},
                   {"fit", scene.camera.fit}, {"follow", scene.camera.follow}}},
   };
+  if (r.modal_tuning) out["modal_tuning"] = modal_tuning_json(*r.modal_tuning, r);
   if (!r.snapshots.empty()) {
     json frames = json::array();
     for (const Snapshot& s : r.snapshots) frames.push_back(snapshot_json(s));

@@ -29,6 +29,11 @@ std::optional<scene::MassModel> read_mass_model(ObjectReader& r);
 /// An optional boolean field, `fallback` when absent.
 bool read_bool(ObjectReader& r, std::string_view key, bool fallback);
 
+/// The designer fields of the tune contract on a scene object (a joint, an oscillator, a mode target), read by
+/// the tune codec itself; `with_mode` = false leaves "mode" to the caller (a mode target's "mode" names a motion).
+/// Empty when the object carries none of them.
+std::optional<TuneRequest> read_designer_fields(ObjectReader& r, const std::string& path, bool with_mode = true);
+
 /// Throws the Problem (422) of a scene's field error.
 [[noreturn]] void throw_field_error(const FieldError& e);
 }  // namespace softtune::codec

@@ -80,6 +80,9 @@ std::vector<NumericLimit> numeric_limits() {
       {"scene_max_body_steps", sl::kMaxBodySteps},
       {"scene_max_bodies", D(sl::kMaxBodies)},
       {"scene_max_joints", D(sl::kMaxJoints)},
+      {"modes_max_dynamic_bodies", D(sl::kMaxModeBodies)},
+      {"modal_max_targets", D(sl::kMaxModeTargets)},
+      {"modal_max_groups", D(sl::kMaxJointGroups)},
       {"simulate_max_frame_stride", D(codec::kMaxFrameStride)},
       {"accuracy_max_step_rates", D(vl::kMaxStepRates)},
       {"accuracy_max_soft_substeps", D(vl::kMaxSoftSubsteps)},
@@ -202,6 +205,11 @@ std::vector<LimitRow> request_rows() {
            " rad/s, " + figure(sl::kMaxPolygonVertices) + " polygon vertices, ids <= " + figure(sl::kMaxIdLength) +
            " characters",
        "`scene/include/softtune/scene/limits.h`", "422 naming the field"},
+      {"modes and modal tuning",
+       "at most " + figure(sl::kMaxModeBodies) + " dynamic bodies, at_s within [0, duration_s], " +
+           figure(sl::kMaxModeTargets) + " targets, " + figure(sl::kMaxJointGroups) + " joint groups",
+       "`scene/include/softtune/scene/limits.h` `kMaxModeBodies`, `kMaxModeTargets`, `kMaxJointGroups`",
+       "422 naming the field before any Box2D step"},
       {"check request",
        figure(app::kMaxCheckPresets) + " preset names, " + figure(app::kMaxCheckScenes) + " inline scenes, " +
            figure(sl::kMaxRates) + " entries each of fps, substeps (and of a preset's rates), shard I/N with N <= " +

@@ -1,5 +1,6 @@
 #include "http/routes.h"
 
+#include "app/modes_app.h"
 #include "app/verify_app.h"
 #include "codec/json_reader.h"
 #include "app/tune_app.h"
@@ -83,6 +84,9 @@ std::vector<Route> service_routes() {
       {"GET", "/api/v1/health", health},
       {"POST", "/api/v1/tune", json_contract(app::run_tune, "tune")},
       {"POST", "/api/v1/simulate", simulate},
+      {"POST", "/api/v1/modes", [](const HttpRequest& request, Service& service) {
+         return json_response(app::run_modes(codec::parse_json(request.body), service.config().presets_dir));
+       }},
       {"POST", "/api/v1/check", check},
       {"POST", "/api/v1/verify", json_contract(app::run_verify, "")},
       {"POST", std::string(kIdentifyPath), identify},

@@ -10,6 +10,7 @@
 #include "app/accuracy_app.h"
 #include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
+#include "app/modes_app.h"
 #include "app/simulate_app.h"
 #include "codec/scene_codec.h"
 #include "codec/stability_codec.h"
@@ -95,6 +96,21 @@ TEST(CapabilityRoutes, SimulateFramesConformAndBadOptionsNameTheField) {
                  "frame_stride", "/api/v1/simulate", "post");
   expect_problem(s.client().Post("/api/v1/simulate", R"({"preset": "no_such_preset"})", kJson), 404, "preset",
                  "/api/v1/simulate", "post");
+}
+
+TEST(CapabilityRoutes, ModesAreTheCliAnswerAndBadOptionsNameTheField) {
+  TestServer s(quick_options(), presets_config());
+  const json request = {{"preset", "vehicle_per_spring"}};
+  auto r = s.client().Post("/api/v1/modes", request.dump(), kJson);
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const json doc = json::parse(r->body);
+  EXPECT_EQ(doc, softtune::app::run_modes(request, kPresets));
+  EXPECT_EQ(conformance_error("/api/v1/modes", "post", 200, kJson, doc), "");
+  expect_problem(s.client().Post("/api/v1/modes", R"({"preset": "vehicle", "at_s": -1})", kJson), 422, "at_s",
+                 "/api/v1/modes", "post");
+  expect_problem(s.client().Post("/api/v1/modes", R"({"preset": "oscillator"})", kJson), 422, "bodies",
+                 "/api/v1/modes", "post");
 }
 
 TEST(CapabilityRoutes, PresetsListAndOnePreset) {

@@ -11,6 +11,8 @@
 
 #include "app/budgets.h"
 #include "app/accuracy_app.h"
+#include "app/modes_app.h"
+#include "app/simulate_app.h"
 #include "app/check_cost.h"
 #include "app/check_request.h"
 #include "app/verify_app.h"
@@ -124,6 +126,9 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["scene_max_body_steps"], softtune::scene::limits::kMaxBodySteps);
   EXPECT_EQ(x["scene_max_bodies"], softtune::scene::limits::kMaxBodies);
   EXPECT_EQ(x["scene_max_joints"], softtune::scene::limits::kMaxJoints);
+  EXPECT_EQ(x["modes_max_dynamic_bodies"], softtune::scene::limits::kMaxModeBodies);
+  EXPECT_EQ(x["modal_max_targets"], softtune::scene::limits::kMaxModeTargets);
+  EXPECT_EQ(x["modal_max_groups"], softtune::scene::limits::kMaxJointGroups);
   EXPECT_EQ(x["simulate_max_frame_stride"], softtune::codec::kMaxFrameStride);
   EXPECT_EQ(x["accuracy_max_step_rates"], softtune::limits::kMaxStepRates);
   EXPECT_EQ(x["accuracy_max_soft_substeps"], softtune::limits::kMaxSoftSubsteps);
@@ -143,7 +148,7 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["check_max_rates"], softtune::scene::limits::kMaxRates);
   EXPECT_EQ(x["request_budget_cpu_s"], softtune::app::budgets::kCpuSeconds);
   EXPECT_EQ(x["request_budget_peak_bytes"], softtune::app::budgets::kPeakBytes);
-  EXPECT_EQ(x.size(), 41u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x.size(), 44u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {
@@ -216,6 +221,7 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
   const std::string presets = SOFTTUNE_SOURCE_DIR "/presets";
   const std::map<std::string, std::function<json(const json&)>> contracts = {
       {"/api/v1/simulate", [&](const json& q) { return softtune::app::run_simulate(q, presets); }},
+      {"/api/v1/modes", [&](const json& q) { return softtune::app::run_modes(q, presets); }},
       {"/api/v1/accuracy", [](const json& q) { return softtune::app::run_accuracy(q); }},
       {"/api/v1/stability", [](const json& q) { return softtune::app::run_stability(q); }},
       {"/api/v1/verify", [](const json& q) { return softtune::app::run_verify(q); }},
@@ -229,4 +235,8 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
     EXPECT_FALSE(e) << path << ": " << (e ? e->pointer + " " + e->rule : "");
     EXPECT_EQ(conformance_error(path, "post", 200, "application/json", contract(body["example"])), "") << path;
   }
+  // A scene that tunes its modes answers with modal_tuning, documented too.
+  const json vehicle = softtune::app::run_simulate({{"preset", "vehicle"}}, presets);
+  ASSERT_TRUE(vehicle.contains("modal_tuning"));
+  EXPECT_EQ(conformance_error("/api/v1/simulate", "post", 200, "application/json", vehicle), "");
 }

@@ -46,7 +46,7 @@ TEST(SchemaLimits, BodyAndShapeBoundsAreTheSceneLimits) {
 
 TEST(SchemaLimits, TuningBoundsAreTheTuneRequestLimits) {
   namespace vl = softtune::limits;
-  for (const char* owner : {"/joint", "/oscillator"}) {
+  for (const char* owner : {"/joint", "/oscillator", "/mode_target"}) {
     const json& p = def(std::string(owner) + "/properties");
     EXPECT_EQ(p["response_frames"]["minimum"].get<double>(), vl::kMinFrames) << owner;
     EXPECT_EQ(p["response_frames"]["maximum"].get<double>(), vl::kMaxFrames) << owner;
@@ -56,6 +56,13 @@ TEST(SchemaLimits, TuningBoundsAreTheTuneRequestLimits) {
   }
   EXPECT_EQ(def("/oscillator/properties/effective_mass")["minimum"].get<double>(), vl::kMinMass);
   EXPECT_EQ(def("/oscillator/properties/effective_mass")["maximum"].get<double>(), vl::kMaxMass);
+}
+
+TEST(SchemaLimits, ModalTuningBoundsAreTheSceneLimits) {
+  EXPECT_EQ(def("/modal_tuning/properties/groups")["maxItems"].get<std::size_t>(), sl::kMaxJointGroups);
+  EXPECT_EQ(def("/modal_tuning/properties/targets")["maxItems"].get<std::size_t>(), sl::kMaxModeTargets);
+  EXPECT_EQ(def("/modal_tuning/properties/at_s")["maximum"].get<double>(), sl::kMaxDurationS);
+  EXPECT_EQ(def("/joint_group/properties/joints")["maxItems"].get<std::size_t>(), sl::kMaxJoints);
 }
 
 // A preset's rates and an expectation's fps / substeps lists (softtune check, docs/preset-ci.md).

@@ -17,6 +17,8 @@ enum class Stage : std::uint8_t {
   engine_models,
   // scenes
   scene_setup, core_integrator, box2d_world, box2d_step, snapshots, response_fit, expectations,
+  // modes of a scene (modes.h, modal_tune.h, scene/linearise.h)
+  settle, linearise, modes, modal_solve,
   // accuracy and stability
   accuracy_runs, box2d_distance_joint, recommendation, stability_sweep, sequential_impulse_chain,
   // rendering

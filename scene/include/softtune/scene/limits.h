@@ -22,5 +22,8 @@ inline constexpr double kMaxSpeed = 1.0e4;               ///< m/s
 inline constexpr double kMaxAngularSpeed = 1.0e3;        ///< rad/s
 inline constexpr std::size_t kMaxBodies = 500, kMaxJoints = 500, kMaxOscillators = 16, kMaxProbes = 64;
 inline constexpr std::size_t kMaxIdLength = 64;
+inline constexpr std::size_t kMaxModeTargets = 16, kMaxJointGroups = 16;
+/// Dynamic bodies a linearisation takes (3 coordinates each): the SVD and the 6n x 6n eigenproblem grow as n^3.
+inline constexpr std::size_t kMaxModeBodies = 100;
 inline constexpr std::size_t kMaxRates = 16;             ///< entries of rates.fps, rates.substeps and an expectation's fps, substeps
 }  // namespace softtune::scene::limits

@@ -10,6 +10,7 @@
 #include "softtune/diagnostics.h"
 #include "softtune/response_fit.h"
 #include "softtune/scene/joint_tuning.h"
+#include "softtune/scene/modal_tuning.h"
 #include "softtune/scene/scene.h"
 #include "softtune/scene/snapshot.h"
 
@@ -63,6 +64,7 @@ struct SceneResult {
   bool finite = true;                   ///< no NaN or infinity in any Box2D body state
   std::vector<std::string> left_world;  ///< ids of bodies that left world.bounds
   std::vector<Snapshot> snapshots;
+  std::optional<ModalTuningResult> modal_tuning;  ///< when the scene tunes its modes (the joints then carry the solve)
 };
 
 /// Runs a scene that passed validate_scene().

@@ -160,6 +160,32 @@ struct CameraSettings {
   std::string follow;                      ///< body id the preview camera follows; empty: none
 };
 
+/// A body mode the designer tunes (docs/scenes.md, "Tuning the modes"): named by a body and its motion
+/// (`body` + `motion`: "heave" y, "pitch" rotation, "surge" x) or by a displacement / angle probe on it. With
+/// body and motion, `probe` (any kind) is only what measures the mode in Box2D.
+struct ModeTargetSettings {
+  std::string probe;
+  std::string body;
+  std::string motion;
+  /// response_frames (+ basis_fps) or frequency_hz, oscillation or damping_ratio; read by the tune codec.
+  TuneRequest tuning;
+};
+
+/// Joints that share one tuning (the front and rear springs, all hangers).
+struct JointGroupSettings {
+  std::string id;
+  std::vector<std::string> joints;
+};
+
+/// Targets on the scene's modes: the groups' k, c are solved so that each targeted mode has the asked
+/// frequency and damping ratio (scene/modal_tuning.h); the joints' own tunings are the solve's first guess.
+struct ModalTuningSettings {
+  std::vector<JointGroupSettings> groups;
+  std::vector<ModeTargetSettings> targets;
+  SoftMode mode = SoftMode::standard;   ///< exact: the discrete poles at the scene's step land on the request
+  std::optional<double> at_s;           ///< s, linearise at this time instead of at rest
+};
+
 struct Scene {
   std::string name;
   std::string description;
@@ -171,6 +197,7 @@ struct Scene {
   std::vector<OscillatorSettings> oscillators;
   std::vector<ProbeSettings> probes;
   std::vector<Expectation> expectations;
+  std::optional<ModalTuningSettings> modal_tuning;
   ShipRates rates;
 };
 

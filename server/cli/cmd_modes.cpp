@@ -1,0 +1,49 @@
+// `softtune modes`: the modes of a preset or scene about its rest state (app/modes_app.h).
+#include <iostream>
+
+#include "app/modes_app.h"
+#include "app/preset_store.h"
+#include "cli/cli_io.h"
+#include "codec/problem.h"
+
+namespace softtune::cli {
+namespace {
+
+constexpr const char* kHelp = R"(softtune modes: the modes of a scene about its rest state.
+
+  softtune modes --preset NAME     a preset from the presets directory
+  softtune modes --request FILE    a full scene (JSON, - for stdin), or {"preset": NAME, ...}
+    --presets DIR        presets directory (default: $SOFTTUNE_PRESETS, else ./presets)
+    --mass-model M       effective (default) | box2d_reduced: the mass the joints' k, c are computed with
+    --at S               linearise at S seconds instead of when the scene settles
+
+Prints one JSON object: stages, at_s, settled, h, modes (name, frequency and damping ratio continuous and at the
+scene's step, shape components). Bad input: exit code 2 and a problem JSON on stderr naming the field.
+)";
+
+}  // namespace
+
+int run_modes(const Args& args) {
+  return guarded([&] {
+    const Flags flags = parse_flags(args, {"preset", "request", "presets", "mass-model", "at"}, {"help"});
+    if (flags.has("help")) {
+      std::cout << kHelp;
+      return kExitOk;
+    }
+    if (!flags.positional.empty()) throw codec::invalid_field(flags.positional.front(), "is not an argument of modes (see --help)");
+    if (flags.has("preset") == flags.has("request")) throw codec::invalid_field("--preset", "give exactly one of --preset NAME and --request FILE");
+    nlohmann::json request;
+    if (auto name = flags.get("preset")) {
+      request = {{"preset", *name}};
+    } else {
+      request = read_request_file(*flags.get("request"));
+      if (!request.is_object()) throw codec::invalid_field("--request", "must hold a JSON object");
+    }
+    if (auto m = flags.get("mass-model")) request["mass_model"] = *m;
+    if (flags.has("at")) request["at_s"] = flag_number(flags, "at");
+    print_json(app::run_modes(request, app::resolve_presets_dir(flags.get("presets"))));
+    return kExitOk;
+  });
+}
+
+}  // namespace softtune::cli

@@ -1,0 +1,92 @@
+// `softtune modes` and POST /api/v1/modes (server/app/modes_app.cpp) on the real presets, and the refusals of
+// the modes request and of a scene's modal tuning, each naming its field.
+#include "app/modes_app.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "app/preset_store.h"
+#include "app/simulate_app.h"
+#include "codec/problem.h"
+
+namespace softtune::app {
+namespace {
+
+using nlohmann::json;
+
+const std::string kPresets = SOFTTUNE_PRESETS_DIR;
+
+std::string problem_field(const std::function<json()>& run) {
+  try {
+    run();
+  } catch (const codec::Problem& p) {
+    return p.field;
+  }
+  return "(no problem)";
+}
+
+const json& mode_named(const json& answer, const std::string& name) {
+  for (const json& m : answer["modes"]) {
+    if (m["name"] == name) return m;
+  }
+  ADD_FAILURE() << "no mode " << name;
+  return answer["modes"][0];
+}
+
+TEST(ModesApp, VehiclePerSpringHeavesOnTheDocsClosedForm) {
+  const json out = run_modes({{"preset", "vehicle_per_spring"}}, kPresets);
+  EXPECT_EQ(out["stages"], (json{"validate", "settle", "linearise", "modes"}));
+  EXPECT_EQ(out["bodies"], 15);
+  // Heave on two springs tuned at 3 Hz on m_eff = 1 / (1/M + 1/m_w + d^2/I) each, wheels held by the road:
+  // f sqrt(2 m_eff / M) (docs/scenes.md).
+  const double m_eff = 1.0 / (1.0 / 120.0 + 1.0 / 15.0 + 1.1 * 1.1 / 92.5);
+  const json& heave = mode_named(out, "chassis heave");
+  EXPECT_NEAR(heave["continuous"]["frequency_hz"].get<double>(), 3.0 * std::sqrt(2.0 * m_eff / 120.0), 5e-3);
+  EXPECT_EQ(heave["components"][0]["body"], "chassis");
+  EXPECT_EQ(heave["components"][0]["coordinate"], "y");
+  EXPECT_TRUE(out["modes"][0]["free"]);  // the car rolls
+  EXPECT_TRUE(out["modes"][0]["continuous"].is_null());
+}
+
+TEST(ModesApp, ModalVehicleReportsTheModesItRunsWith) {
+  const json out = run_modes({{"preset", "vehicle"}}, kPresets);
+  EXPECT_EQ(out["stages"], (json{"validate", "settle", "linearise", "modes", "modal_solve", "settle", "linearise", "modes"}));
+  const json& heave = mode_named(out, "chassis heave");
+  EXPECT_NEAR(heave["discrete"]["frequency_hz"].get<double>(), 3.0, 0.01);  // the exact solve at the new rest
+  EXPECT_NEAR(heave["discrete"]["damping_ratio"].get<double>(), 0.5, 0.01);
+}
+
+TEST(ModesApp, RefusesBadRequestsNamingTheField) {
+  EXPECT_EQ(problem_field([] { return run_modes({{"preset", "vehicle"}, {"at_s", 100}}, kPresets); }), "at_s");
+  EXPECT_EQ(problem_field([] { return run_modes({{"preset", "vehicle"}, {"at_s", "soon"}}, kPresets); }), "at_s");
+  EXPECT_EQ(problem_field([] { return run_modes({{"preset", "oscillator"}}, kPresets); }), "bodies");
+  EXPECT_EQ(problem_field([] { return run_modes({{"preset", "vehicle"}, {"extra", 1}}, kPresets); }), "extra");
+}
+
+json vehicle_with(const json& target) {
+  json scene = load_preset(kPresets, "vehicle");
+  scene["modal_tuning"]["targets"] = json::array({target});
+  return scene;
+}
+
+TEST(ModesApp, RefusesModalTargetsItCannotReachNamingThem) {
+  // Beyond Nyquist at 60 fps in exact mode.
+  json t = {{"mode", "heave"}, {"body", "chassis"}, {"frequency_hz", 40}, {"damping_ratio", 0.1}};
+  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "modal_tuning.targets.0.frequency_hz");
+  // A box of the stack: its contacts hold it, no mode moves it.
+  t = {{"mode", "heave"}, {"body", "box_0_0"}, {"frequency_hz", 2}, {"damping_ratio", 0.5}};
+  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "modal_tuning.targets.0");
+  t = {{"mode", "wobble"}, {"body", "chassis"}, {"frequency_hz", 2}, {"damping_ratio", 0.5}};
+  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "/modal_tuning/targets/0/mode");  // the schema, by JSON pointer
+  t = {{"mode", "heave"}, {"body", "ground"}, {"frequency_hz", 2}, {"damping_ratio", 0.5}};
+  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "modal_tuning.targets.0.body");
+  t = {{"mode", "heave"}, {"body", "chassis"}, {"damping_ratio", 0.5}};  // no frequency: the tune codec's rule
+  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "modal_tuning.targets.0.response_frames");
+  json scene = load_preset(kPresets, "vehicle");
+  scene["modal_tuning"]["groups"][0]["joints"].push_back("rear_suspension");
+  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", scene}}, kPresets); }), "modal_tuning.groups.0.joints.2");
+}
+
+}  // namespace
+}  // namespace softtune::app

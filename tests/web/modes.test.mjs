@@ -1,0 +1,43 @@
+// web/modes.js: the scene built from a picked mode is accepted by the real codec and its solve lands the mode on
+// the sliders' request (the linear model's prediction, `softtune simulate`); the drawing has an arrow per moving
+// coordinate. Run: SOFTTUNE_BIN=build/softtune node --test tests/web/modes.test.mjs
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import { modalScene, modeArrows, modeTarget } from '../../web/modes.js';
+
+const softtune = process.env.SOFTTUNE_BIN ?? 'build/softtune';
+const presets = new URL('../../presets/', import.meta.url);
+const run = (args, input) => JSON.parse(execFileSync(softtune, args, { input: JSON.stringify(input), encoding: 'utf8', cwd: new URL('../..', import.meta.url) }));
+
+test('a picked mode becomes the modal tuning target the solve lands on', () => {
+  const scene = JSON.parse(readFileSync(new URL('vehicle_per_spring.json', presets), 'utf8'));
+  const modes = run(['modes', '--request', '-'], scene);
+  const heave = modes.modes.find((m) => m.name === 'chassis heave');
+  assert.deepEqual(modeTarget(heave), { body: 'chassis', mode: 'heave' });
+  const tuned = modalScene(scene, { response_frames: 24, basis_fps: 60, oscillation: 'some', mode: 'exact' }, modeTarget(heave));
+  assert.equal(tuned.modal_tuning.groups[0].joints.length, 2);
+  const out = run(['simulate', '--request', '-'], tuned);
+  const target = out.modal_tuning.targets[0];
+  assert.equal(target.mode, 'chassis heave');
+  assert.ok(Math.abs(target.predicted.frequency_hz - 2.5) < 1e-6);  // 24 frames at 60 fps, exact at the step
+  assert.ok(Math.abs(target.predicted.damping_ratio - 0.5) < 1e-6);
+  assert.equal(modalScene(scene, {}, null), scene);  // no pick: the scene as given
+});
+
+test('the drawing has an arrow for each translation and an arc for a rotation', () => {
+  const created = [];
+  const doc = {
+    createElementNS: (_ns, name) => {
+      const e = { name, attrs: {}, children: [], setAttribute(k, v) { this.attrs[k] = v; }, appendChild(c) { this.children.push(c); } };
+      created.push(e);
+      return e;
+    },
+  };
+  modeArrows({ components: [{ body: 'chassis', coordinate: 'y', amplitude: 1 }, { body: 'chassis', coordinate: 'angle', amplitude: 0.5 },
+    { body: 'wheel', coordinate: 'x', amplitude: 0.3 }] }, doc);
+  const arrows = created.filter((e) => (e.attrs.class ?? '').includes('mode-arrow'));
+  assert.equal(arrows.length, 3);
+  assert.equal(created.filter((e) => e.name === 'rect').length, 2);
+});

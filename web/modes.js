@@ -1,0 +1,100 @@
+// A Box2D preset's modes (POST /api/v1/modes, docs/scenes.md "Modes"): a list with each mode's frequency and
+// damping ratio at the scene's step and a small arrow drawing of its shape; picking one makes the sliders tune
+// that mode (the scene's modal_tuning target) instead of each spring on its own mass.
+const SVG = 'http://www.w3.org/2000/svg';
+const TUNING_KEYS = ['response_frames', 'basis_fps', 'frequency_hz', 'oscillation', 'damping_ratio', 'mode'];
+
+const fmtHz = (p) => (p ? `${p.frequency_hz.toFixed(3)} Hz, ζ ${p.damping_ratio.toFixed(3)}` : '—');
+
+/// The body and motion a mode is named by: its largest component.
+export function modeTarget(mode) {
+  const top = mode.components?.[0];
+  return top ? { body: top.body, mode: top.motion } : null;
+}
+
+/// The scene with the sliders' tuning on the picked mode: every designer-tuned joint in one group, solved so that
+/// the mode has the asked frequency and damping (exact mode: at the scene's step). No pick: the scene as given.
+export function modalScene(scene, tuning, picked) {
+  if (!picked) return scene;
+  const s = structuredClone(scene);
+  const joints = (s.joints ?? []).filter((j) => TUNING_KEYS.some((k) => k in j)).map((j) => j.id);
+  if (joints.length === 0) return scene;
+  const { mode, ...ask } = tuning;  // the page's standard | exact is the solve's; a target's "mode" is its motion
+  const target = { ...ask, body: picked.body, mode: picked.mode };
+  s.modal_tuning = { mode: mode ?? 'standard', groups: [{ id: 'tuned', joints }], targets: [target] };
+  return s;
+}
+
+/// The drawing of one mode's shape: per body a box, an arrow for its translation and an arc for its rotation,
+/// scaled by the component amplitudes (the largest is 1). Returns an <svg> element.
+export function modeArrows(mode, doc = document) {
+  const bodies = [];
+  for (const c of mode.components ?? []) {
+    let b = bodies.find((x) => x.id === c.body);
+    if (!b) bodies.push((b = { id: c.body, x: 0, y: 0, angle: 0 }));
+    b[c.coordinate] = c.amplitude;
+  }
+  const shown = bodies.slice(0, 4);
+  const w = 64 * Math.max(1, shown.length), h = 64;
+  const svg = doc.createElementNS(SVG, 'svg');
+  svg.setAttribute('viewBox', `0 0 ${w} ${h}`);
+  svg.setAttribute('width', String(w));
+  svg.setAttribute('height', String(h));
+  svg.setAttribute('class', 'mode-shape');
+  const add = (name, attrs, parent = svg) => {
+    const e = doc.createElementNS(SVG, name);
+    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
+    parent.appendChild(e);
+    return e;
+  };
+  shown.forEach((b, i) => {
+    const cx = 32 + 64 * i, cy = 32;
+    add('rect', { x: cx - 10, y: cy - 6, width: 20, height: 12, class: 'mode-body' });
+    const len = 24, dx = len * b.x, dy = -len * b.y;  // SVG y points down
+    if (Math.hypot(dx, dy) > 1) add('line', { x1: cx, y1: cy, x2: cx + dx, y2: cy + dy, class: 'mode-arrow', 'marker-end': 'url(#mode-head)' });
+    if (Math.abs(b.angle) > 0.04) {
+      const r = 16, sweep = Math.max(-2.5, Math.min(2.5, b.angle * 0.8));
+      const x2 = cx + r * Math.cos(-sweep), y2 = cy + r * Math.sin(-sweep);
+      add('path', { d: `M ${cx + r} ${cy} A ${r} ${r} 0 0 ${sweep > 0 ? 0 : 1} ${x2} ${y2}`, class: 'mode-arrow mode-turn', 'marker-end': 'url(#mode-head)' });
+    }
+    add('text', { x: cx, y: h - 2, 'text-anchor': 'middle', class: 'mode-label' }).textContent = b.id;
+  });
+  const defs = add('defs', {});
+  const marker = add('marker', { id: 'mode-head', markerWidth: 6, markerHeight: 6, refX: 5, refY: 3, orient: 'auto' }, defs);
+  add('path', { d: 'M0,0 L6,3 L0,6 z', class: 'mode-head' }, marker);
+  return svg;
+}
+
+/// Fills `panel` with the modes of `answer` (the POST /api/v1/modes body): one row per mode that moves, a radio
+/// to pick the one the sliders tune (`onPick(target | null)`), `picked` the current pick.
+export function showModes(panel, answer, picked, onPick, doc = document) {
+  panel.replaceChildren();
+  const title = doc.createElement('h3');
+  title.textContent = `Modes at rest (t = ${answer.at_s.toFixed(2)} s${answer.settled ? '' : ', still moving'})`;
+  panel.appendChild(title);
+  const list = doc.createElement('ul');
+  list.className = 'modes';
+  const choice = (label, target, checked) => {
+    const li = doc.createElement('li');
+    const input = doc.createElement('input');
+    input.type = 'radio';
+    input.name = 'mode-pick';
+    input.checked = checked;
+    input.addEventListener('change', () => onPick(target));
+    const text = doc.createElement('label');
+    text.append(input, ` ${label}`);
+    li.appendChild(text);
+    list.appendChild(li);
+    return li;
+  };
+  choice('each spring on its own mass', null, !picked);
+  for (const m of answer.modes ?? []) {
+    if (m.free || m.unstable) continue;
+    const target = modeTarget(m);
+    const li = choice(`${m.name}: ${fmtHz(m.discrete ?? m.continuous)}`, target,
+      Boolean(picked && target && picked.body === target.body && picked.mode === target.mode));
+    li.dataset.testid = 'mode';
+    li.appendChild(modeArrows(m, doc));
+  }
+  panel.appendChild(list);
+}
