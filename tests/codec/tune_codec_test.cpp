@@ -7,7 +7,6 @@
 #include <cmath>
 #include <functional>
 
-#include "codec/json_reader.h"
 #include "codec/problem.h"
 
 using nlohmann::json;
@@ -120,26 +119,4 @@ TEST(TuneCodec, BadInputNamesTheField) {
             }),
             std::make_pair(422, std::string("constraint.axis")));
   EXPECT_EQ(problem_of(json::array()).first, 422);
-}
-
-TEST(JsonReader, RefusesMalformedDeepAndDuplicated) {
-  EXPECT_THROW(parse_json("{\"a\": 1,"), Problem);
-  EXPECT_THROW(parse_json("{\"fps\": 60, \"fps\": 30}"), Problem);
-  std::string deep(100, '[');
-  deep += std::string(100, ']');
-  try {
-    parse_json(deep);
-    FAIL();
-  } catch (const Problem& p) {
-    EXPECT_EQ(p.status, 400);
-  }
-  EXPECT_NO_THROW(parse_json(std::string(20, '[') + std::string(20, ']')));
-  // Huge exponents overflow a double: refused at parse time, naming the field.
-  try {
-    parse_json(R"({"oscillation": "some", "response_frames": 1e999, "effective_mass": 1})");
-    FAIL();
-  } catch (const Problem& p) {
-    EXPECT_EQ(p.status, 400);
-    EXPECT_EQ(p.field, "response_frames");
-  }
 }
