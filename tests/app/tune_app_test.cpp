@@ -1,6 +1,7 @@
 // The tune use case (tune_app.cpp): decode, tune and encode in one call. The designer mapping's closed forms
-// hold in the answer: 12 frames at 60 fps is 5 Hz, k = m omega^2, c = 2 m zeta omega, and Box2D's soft
-// constraint numbers gamma = 1 / (h (c + h k)), beta = h k / (c + h k) (Catto GDC 2011); bad input is a Problem.
+// hold in the answer: 12 frames at 60 fps is 5 Hz, k = m omega^2, c = 2 m zeta omega, and the soft constraint's
+// gamma = 1 / (c + h k), beta = h k / (c + h k) (Catto GDC 2011, force form; the impulse form is gamma / h);
+// bad input is a Problem.
 #include "app/tune_app.h"
 
 #include <gtest/gtest.h>
@@ -22,7 +23,8 @@ TEST(TuneApp, StandardModeAnswerHasTheClosedForms) {
   EXPECT_NEAR(r["h"].get<double>(), h, 1e-15);
   EXPECT_NEAR(r["k"].get<double>(), k, 1e-9 * k);
   EXPECT_NEAR(r["c"].get<double>(), c, 1e-9 * c);
-  EXPECT_NEAR(r["gamma"].get<double>(), 1.0 / (h * (c + h * k)), 1e-12);
+  EXPECT_NEAR(r["gamma"].get<double>(), 1.0 / (c + h * k), 1e-12);
+  EXPECT_NEAR(r["gamma_impulse"].get<double>(), 1.0 / (h * (c + h * k)), 1e-12);
   EXPECT_NEAR(r["beta"].get<double>(), h * k / (c + h * k), 1e-12);
 }
 

@@ -4,9 +4,6 @@
 
 #include <cmath>
 
-#include "softtune/render/font.h"
-#include "softtune/render/text.h"
-
 namespace softtune::render {
 namespace {
 
@@ -64,39 +61,6 @@ TEST(Tessellate, TextIsNotInTheMesh) {
   f.labels.push_back({"LABEL", {0, 0}});
   tessellate(f, test_view(), true, with);
   EXPECT_EQ(with.vertices.size(), without.vertices.size());
-}
-
-TEST(BlitText, OneDotPerLitGlyphBitClippedToTheImage) {
-  const ImageSize size{40, 20};
-  std::vector<std::uint8_t> px(40 * 20 * 4, 0);
-  blit_text(px, size, "1", 10, 5, 2, palette::kText);
-  int lit_dots = 0;
-  for (std::uint8_t row : glyph_rows('1')) {
-    for (int b = 0; b < kGlyphWidth; ++b) lit_dots += (row >> b) & 1;
-  }
-  int lit_pixels = 0;
-  for (int y = 0; y < 20; ++y) {
-    for (int x = 0; x < 40; ++x) {
-      if (px[(y * 40 + x) * 4 + 3] == 255) {
-        ++lit_pixels;
-        EXPECT_GE(x, 10);
-        EXPECT_LT(x, 10 + kGlyphWidth * 2);
-        EXPECT_GE(y, 5);
-        EXPECT_LT(y, 5 + kGlyphHeight * 2);
-      }
-    }
-  }
-  EXPECT_EQ(lit_pixels, lit_dots * 4);
-  // Off the edges: no writes out of bounds, and what is inside still appears.
-  blit_text(px, size, "WIDE TEXT\nOFF", 30, 15, 3, palette::kText);
-  blit_text(px, size, "NEG", -7, -4, 1, palette::kText);
-  EXPECT_EQ(text_width_px("AB\nABCD", 2), 4 * kGlyphAdvance * 2);
-}
-
-TEST(Font, LowerCaseIsUpperCaseAndUnknownIsQuestionMark) {
-  EXPECT_EQ(glyph_rows('a'), glyph_rows('A'));
-  EXPECT_EQ(glyph_rows('~'), glyph_rows('?'));
-  EXPECT_NE(glyph_rows('0'), glyph_rows('O'));
 }
 
 }  // namespace
