@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Each libFuzzer harness for a short bounded time (default 60 s, SOFTTUNE_FUZZ_SECONDS overrides) from
+# Each libFuzzer harness for a short bounded time (default 30 s, SOFTTUNE_FUZZ_SECONDS overrides; the test command keeps within its 30 min) from
 # the committed corpus in fuzz/corpus/<name>, after replaying fuzz/regressions/<name>; two harnesses at a
 # time, one per core (each libFuzzer process is single-threaded). New inputs go to a scratch directory,
 # so the committed corpus stays as it is. Called by scripts/test.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${SOFTTUNE_FUZZ_SECONDS:-60}
+seconds=${SOFTTUNE_FUZZ_SECONDS:-30}
 parallel=${SOFTTUNE_JOBS:-2}
 names=(tune_request request_decode simulate_request accuracy_request preset_load)
 scripts/build-fuzz.sh

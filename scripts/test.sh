@@ -6,7 +6,7 @@
 #   attacks      scripts/test-attacks.sh: the attack suite against a real `softtune serve`
 #   asan-build   scripts/build-asan.sh: clang ASan+UBSan build of the suite and the fuzz harnesses, build-asan/
 #   asan-ctest   every test in build-asan/ under ASan+UBSan (LSan on)
-#   fuzz         scripts/test-fuzz-short.sh: regressions replayed, then each harness 60 s, two at a time
+#   fuzz         scripts/test-fuzz-short.sh: regressions replayed, then each harness 30 s, two at a time
 #   tsan         the server and render-pool tests built and run under TSan, build-tsan/
 # Any sanitizer report fails its stage. At the end (also after a failure) it prints each stage's wall
 # time and the load average when the stage ended.

@@ -57,38 +57,33 @@ const engines::SettingValues& engine_settings_for(const TuneRequest& r, std::siz
   return engines::default_settings_of(*engines::engine_models()[index]);
 }
 
-TuneResult tune(const TuneRequest& r) {
-  TuneResult out;
-  out.stages.add(Stage::validate);
+namespace {
 
-  // Designer mapping (SPEC.md section 1): f = B / N or given; zeta from the level or given.
-  out.stages.add(Stage::designer_mapping);
-  out.h = step_size(r.fps, r.substeps);
-  const double asked_hz = requested_frequency_hz(r);
-  out.damping_ratio = requested_damping_ratio(r);
-  out.omega = angular_frequency(asked_hz);
-
-  if (r.constraint) {
-    out.stages.add(Stage::effective_mass);
-    double length = 1.0;
-    const AnyConstraint unit = with_unit_axis(*r.constraint, length);
-    if (std::abs(length - 1.0) > 1e-9) out.warnings.push_back({WarningCode::axis_normalized, length, 1.0});
-    out.effective_mass = 1.0 / constraint_inverse_mass(unit);
-    out.inverse_effective_mass_impulse = constraint_unit_impulse(unit);
-    out.box2d_reduced_mass = reduced_mass_of(unit);
-  } else {
+// The effective mass the spring acts on: given, or the constraint's 1 / (J M^-1 J^T) along a unit axis.
+void find_effective_mass(const TuneRequest& r, TuneResult& out) {
+  if (!r.constraint) {
     out.effective_mass = *r.effective_mass;
+    return;
   }
+  out.stages.add(Stage::effective_mass);
+  double length = 1.0;
+  const AnyConstraint unit = with_unit_axis(*r.constraint, length);
+  if (std::abs(length - 1.0) > 1e-9) out.warnings.push_back({WarningCode::axis_normalized, length, 1.0});
+  out.effective_mass = 1.0 / constraint_inverse_mass(unit);
+  out.inverse_effective_mass_impulse = constraint_unit_impulse(unit);
+  out.box2d_reduced_mass = reduced_mass_of(unit);
+}
 
-  // Exact mode may clamp omega to Nyquist; everything downstream uses the clamped value.
+// The step model of the asked spring, and the warnings about what the step can represent. Exact mode may
+// clamp omega to Nyquist; everything downstream uses the clamped value.
+StepModel soften(const TuneRequest& r, double asked_hz, TuneResult& out) {
   out.stages.add(Stage::softness);
   out.stages.add(Stage::exact_softness);
   StepModel model = make_step_model(out.effective_mass, out.omega, out.damping_ratio, out.h);
   const double nyquist_hz = 0.5 / out.h;
   if (r.mode == SoftMode::exact) {
     if (model.exact.clamped_to_nyquist) {
-      out.warnings.push_back(
-          {WarningCode::nyquist_clamped, asked_hz, frequency_from_angular(model.exact.omega)});
+      out.warnings.push_back({WarningCode::nyquist_clamped, asked_hz, frequency_from_angular(model.exact.omega)});
       out.omega = model.exact.omega;
       model = make_step_model(out.effective_mass, out.omega, out.damping_ratio, out.h);
     }
@@ -100,24 +95,32 @@ TuneResult tune(const TuneRequest& r) {
   } else if (asked_hz * std::sqrt(std::max(0.0, 1.0 - out.damping_ratio * out.damping_ratio)) > nyquist_hz) {
     out.warnings.push_back({WarningCode::above_nyquist, asked_hz, nyquist_hz});
   }
+  return model;
+}
+
+// The spring and softness of the chosen mode, and Box2D v3's (hertz, ratio) form of that spring.
+void choose_spring(const TuneRequest& r, const StepModel& model, TuneResult& out) {
   out.frequency_hz = frequency_from_angular(out.omega);
   out.standard_spring = {model.spring.stiffness, model.spring.damping};
   const bool exact = r.mode == SoftMode::exact;
   out.spring = exact ? model.exact.spring : out.standard_spring;
   out.softness = exact ? model.exact.softness : model.soft;
   if (out.softness.kind == SoftnessKind::no_constraint) out.warnings.push_back({WarningCode::no_constraint});
-
-  // Box2D v3's (hertz, ratio) form of the spring in use: a1 = (c + h k) / (m omega) must be positive.
+  // a1 = (c + h k) / (m omega) must be positive for the (hertz, ratio) form to exist.
   const Oscillator used{out.effective_mass, out.spring.stiffness, out.spring.damping};
   const double used_omega = natural_angular_frequency(used);
   if (used_omega == 0.0 || out.spring.damping + out.h * out.spring.stiffness > 0.0) {
     out.box2d_v3 = soft_v3(used_omega, damping_ratio_of(used), out.h);
   }
+}
 
+// Every integrator's discrete response to this spring at this step; the chosen mode's is what is achieved.
+void analyze_methods(const TuneRequest& r, const StepModel& model, TuneResult& out) {
   out.stages.add(Stage::discrete_analysis);
   for (std::size_t i = 0; i < kAllMethods.size(); ++i) {
     out.stability[i] = analyze(kAllMethods[i], model, out.omega, out.damping_ratio);
   }
+  const bool exact = r.mode == SoftMode::exact;
   const DiscreteAnalysis& chosen = out.stability[method_index(exact ? Method::soft_exact : Method::soft)];
   out.achieved_frequency_hz = chosen.achieved_frequency_hz;
   out.achieved_damping_ratio = chosen.achieved_damping_ratio;
@@ -130,7 +133,11 @@ TuneResult tune(const TuneRequest& r) {
     const double error = *out.achieved_frequency_hz / out.frequency_hz - 1.0;
     if (std::abs(error) > 0.05) out.warnings.push_back({WarningCode::frequency_error, error, 0.05});
   }
+}
 
+// The plain export in each engine's units, then each engine's own step (SPEC.md 5): what it does with the
+// export, and what makes it do the request.
+void export_to_engines(const TuneRequest& r, TuneResult& out) {
   out.stages.add(Stage::engine_export);
   EngineExportInput in;
   in.effective_mass = out.effective_mass;
@@ -141,7 +148,6 @@ TuneResult tune(const TuneRequest& r) {
   in.box2d_reduced_mass = out.box2d_reduced_mass;
   out.engines = export_engines(in, out.warnings);
 
-  // Each engine's own step (SPEC.md 5): what it does with the export, and what makes it do the request.
   out.stages.add(Stage::engine_models);
   engines::Target target;
   target.effective_mass = out.effective_mass;
@@ -155,6 +161,24 @@ TuneResult tune(const TuneRequest& r) {
   for (std::size_t i = 0; i < models.size(); ++i) {
     out.engine_reports.push_back(models[i]->report(target, engine_settings_for(r, i)));
   }
+}
+
+}  // namespace
+
+TuneResult tune(const TuneRequest& r) {
+  TuneResult out;
+  out.stages.add(Stage::validate);
+  // Designer mapping (SPEC.md section 1): f = B / N or given; zeta from the level or given.
+  out.stages.add(Stage::designer_mapping);
+  out.h = step_size(r.fps, r.substeps);
+  const double asked_hz = requested_frequency_hz(r);
+  out.damping_ratio = requested_damping_ratio(r);
+  out.omega = angular_frequency(asked_hz);
+  find_effective_mass(r, out);
+  const StepModel model = soften(r, asked_hz, out);
+  choose_spring(r, model, out);
+  analyze_methods(r, model, out);
+  export_to_engines(r, out);
   return out;
 }
 

@@ -172,10 +172,19 @@ struct ConnectionGate::State {
       close_socket(in.sock);
       return;
     }
+    const int in_sock = in.sock;
     const auto [it, inserted] = held.insert_or_assign(in.sock, std::move(in.held));
     held_count.store(held.size(), std::memory_order_relaxed);
     // A worker that gave way to others may hand back a connection whose next head it already read.
-    if (!it->second.draining && head_complete(it->second.received)) hand_over(it);
+    if (it->second.draining) return;
+    if (head_complete(it->second.received)) {
+      hand_over(it);
+    } else {
+      // Read at once what has already arrived: under a flood of new connections a whole batch is inserted
+      // before epoll reports any of them readable, and a client whose head came in one packet (a health
+      // probe) must not wait in the gate, where later arrivals of the batch could evict it.
+      on_readable(in_sock);
+    }
   }
 
   // The head is complete (or too large to wait for): queue it for a worker, or answer 503 when the

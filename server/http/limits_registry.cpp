@@ -85,9 +85,10 @@ std::vector<NumericLimit> numeric_limits() {
   };
 }
 
-std::vector<LimitRow> limit_rows() {
-  const render::PipelineOptions pipeline;
-  const std::string threads = figure(hl::kDefaultThreads);
+namespace {
+
+// Connections, heads, bodies and threads: the HTTP service's own limits.
+std::vector<LimitRow> transport_rows() {
   return {
       {"request body", bytes(hl::kMaxBodyBytes) + ", by `Content-Length`", "`server/http/limits.h` `kMaxBodyBytes`",
        "413 before the body is read; the connection closes"},
@@ -113,7 +114,7 @@ std::vector<LimitRow> limit_rows() {
        "`server/http/limits.h` `kKeepAliveTimeout`, `kKeepAliveMaxRequests`",
        "the connection closes (`Connection: close` on the last answer)"},
       {"worker threads",
-       threads + " by default, 1 to " + figure(hl::kMaxThreads) + " (`--threads`); one per request being served",
+       figure(hl::kDefaultThreads) + " by default, 1 to " + figure(hl::kMaxThreads) + " (`--threads`); one per request being served",
        "`server/http/limits.h` `kDefaultThreads`, `kMaxThreads`", "complete requests wait in the queue"},
       {"requests waiting for a worker", figure(hl::kMaxQueuedConnections), "`server/http/limits.h` `kMaxQueuedConnections`",
        "503 at once with `Retry-After: 1`"},
@@ -123,6 +124,12 @@ std::vector<LimitRow> limit_rows() {
            "server raises its soft file-descriptor limit to fit them, and holds fewer if the hard limit is lower",
        "`server/http/limits.h` `kMaxOpenConnections`",
        "one that is draining is closed, or else the one that has waited longest, to admit the new one"},
+  };
+}
+
+// What a request may hold: JSON, names, and each contract's values.
+std::vector<LimitRow> request_rows() {
+  return {
       {"JSON nesting", figure(codec::kMaxJsonDepth) + " levels", "`server/codec/json_reader.h` `kMaxJsonDepth`",
        "400 (nlohmann's recursive dump and copy would crash on deep documents)"},
       {"JSON numbers", "finite doubles", "`server/codec/json_reader.cpp`",
@@ -188,6 +195,13 @@ std::vector<LimitRow> limit_rows() {
        "`kVerifyMaxDuration`, `kVerifyMaxSteps`; x0 in `server/codec/verify_codec.cpp`",
        "422 naming the field; each trajectory in the answer is strided to at most " +
            figure(codec::kVerifyMaxPlotSamples) + " samples (`kVerifyMaxPlotSamples`)"},
+  };
+}
+
+// Preview frames: sizes, waiters, raster processes and the caches.
+std::vector<LimitRow> preview_rows() {
+  const render::PipelineOptions pipeline;
+  return {
       {"preview",
        figure(render::caps::kMinSide) + " to " + figure(render::caps::kMaxWidth) + " x " +
            figure(render::caps::kMaxHeight) + " px, 1 to " + figure(render::caps::kMaxFrames) + " frames",
@@ -196,7 +210,7 @@ std::vector<LimitRow> limit_rows() {
       {"requests waiting for preview frames", figure(app::kMaxPreviewWaiters) + " at a time (`\"wait\": true`)",
        "`server/app/preview_service.h` `kMaxPreviewWaiters`",
        "answered at once as with `\"wait\": false` (status `rendering`, `progress_url`) with a `wait_declined` "
-       "warning; the render goes on. Without the cap, 16 waiting previews held all " + threads +
+       "warning; the render goes on. Without the cap, 16 waiting previews held all " + figure(hl::kDefaultThreads) +
            " worker threads and health went unanswered for 4 s"},
       {"one preview frame", millis(render::kFrameTimeoutMs) + " in its raster process",
        "`render/include/softtune/render/renderer.h` `kFrameTimeoutMs`",
@@ -215,6 +229,14 @@ std::vector<LimitRow> limit_rows() {
        "`PipelineOptions::cache_bytes`",
        "least recently used evicted"},
   };
+}
+
+}  // namespace
+
+std::vector<LimitRow> limit_rows() {
+  std::vector<LimitRow> rows = transport_rows();
+  for (auto part : {request_rows(), preview_rows()}) rows.insert(rows.end(), part.begin(), part.end());
+  return rows;
 }
 
 nlohmann::json limits_json() {
