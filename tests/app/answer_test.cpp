@@ -11,9 +11,12 @@ namespace softtune::app {
 namespace {
 
 TEST(Answer, MediaTypes) {
-  EXPECT_EQ(Answer{Format::json}.content_type(), "application/json");
-  EXPECT_EQ(Answer{Format::csv}.content_type(), "text/csv");
-  EXPECT_EQ(Answer{Format::svg}.content_type(), "image/svg+xml");
+  Answer a;
+  EXPECT_EQ(a.content_type(), "application/json");  // json by default
+  a.format = Format::csv;
+  EXPECT_EQ(a.content_type(), "text/csv");
+  a.format = Format::svg;
+  EXPECT_EQ(a.content_type(), "image/svg+xml");
 }
 
 TEST(Answer, FormatNamedFromTheAllowedOnes) {

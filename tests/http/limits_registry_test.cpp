@@ -36,7 +36,9 @@ TEST(LimitsRegistry, IntegralLimitsAreIntegersWithTheEnforcedValue) {
   const json j = limits_json();
   for (const NumericLimit& l : numeric_limits()) {
     const json& v = j.at(std::string(l.key));
-    if (l.value == std::floor(l.value)) EXPECT_TRUE(v.is_number_integer()) << l.key << " = " << v;
+    if (l.value == std::floor(l.value)) {
+      EXPECT_TRUE(v.is_number_integer()) << l.key << " = " << v;
+    }
     EXPECT_DOUBLE_EQ(v.get<double>(), l.value) << l.key;
   }
   EXPECT_EQ(j.at("max_body_bytes").get<long long>(), static_cast<long long>(limits::kMaxBodyBytes));

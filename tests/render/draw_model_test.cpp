@@ -34,7 +34,7 @@ TEST(DrawModel, FrameBoundsCoverEveryShape) {
   EXPECT_TRUE(bounds_of(f).empty());  // a ground alone has no extent
   f.polygons.push_back({{{0, 0}, {1, 0}, {1, 1}}, Role::static_body});
   f.circles.push_back({{3.0, 0.5}, 0.5});                 // reaches x = 3.5 and y = 0
-  f.springs.push_back({{0.5, 1.0}, {0.5, 2.0}});         // up to y = 2
+  f.springs.push_back({{0.5, 1.0}, {0.5, 2.0}, 1.0, std::nullopt});  // up to y = 2
   f.anchors.push_back({{-1.0, 0.5}});                     // down to x = -1
   f.labels.push_back({"far away", {100.0, 100.0}});       // labels are left out
   const Bounds b = bounds_of(f);
