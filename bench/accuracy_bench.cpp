@@ -105,6 +105,21 @@ void BM_StabilitySweep_Default(benchmark::State& state) {
 }
 BENCHMARK(BM_StabilitySweep_Default)->Unit(benchmark::kMillisecond)->Iterations(3);
 
+// The grid-only answers (issue #20's baseline): no step limits, chain limits read off the scan.
+void BM_StabilitySweep_GridOnly(benchmark::State& state) {
+  SweepSettings s = default_sweep_settings();
+  s.step_limits = false;
+  ChainSweepSettings c = default_chain_sweep_settings();
+  c.bisect = false;
+  timed(state, [&] {
+    benchmark::DoNotOptimize(run_sweep(s).summary.cases);
+    benchmark::DoNotOptimize(run_chain_sweep(c).cases.size());
+  });
+}
+BENCHMARK(BM_StabilitySweep_GridOnly)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// What `softtune stability` runs: the sweep with its bisected step limits and the chain in four solvers
+// with bisected, simulation-confirmed limits (target: under 2 s).
 void BM_StabilitySweep_DefaultWithChain(benchmark::State& state) {
   const SweepSettings s = default_sweep_settings();
   const ChainSweepSettings c = default_chain_sweep_settings();

@@ -21,6 +21,7 @@ packages=(
   clang-14 libclang-rt-14-dev python3  # security: libFuzzer harnesses, attack suite
   valgrind                           # tests: uninitialised reads in the Box2D tests (memcheck)
   libbullet-dev                      # engines/bullet, tests/engines/bullet: Bullet 3.24
+  libxml2-dev                        # tests/app: the check's JUnit XML validated against its XSD, parsed back
 )
 
 missing=()

@@ -14,6 +14,7 @@ export class ApiError extends Error {
 }
 
 let documented = null;
+let words = {};
 
 /// The server's OpenAPI document lists exactly the routes it serves (the service tests that), so the page
 /// asks for it once and does not call routes this server lacks. Without the document every route is tried
@@ -27,9 +28,17 @@ export async function loadRoutes() {
     for (const [path, ops] of Object.entries(doc.paths ?? {})) {
       for (const method of Object.keys(ops)) documented.add(`${method.toUpperCase()} ${path}`);
     }
+    words = doc.components?.schemas?.TuneRequest?.properties?.oscillation?.['x-damping-ratio'] ?? {};
   } catch {
     documented = null;
   }
+}
+
+/// The damping ratio of each oscillation word ({free: 0, some: 0.5, none: 1}) as the server's OpenAPI
+/// document gives it (core's designer mapping; tests/http/openapi_test.cpp holds them equal), so the page
+/// keeps no copy. Empty without the document: the slider then follows the tune answer's requested ratio.
+export function oscillationWords() {
+  return words;
 }
 
 /// Whether the server documents `method path` (path as in OpenAPI, e.g. /api/v1/presets/{name}).

@@ -1,17 +1,26 @@
-// softtune's designer page: the form is the state (mirrored in the URL), every change asks the API
-// again (debounced; only the newest answer is shown), and each panel says so plainly when this server
-// lacks its route. Hooks for tests and tools: data-testid on values, plots and the preview image, and
+// softtune's designer page: the form is the state (mirrored in the URL, one history entry per gesture, so
+// the browser's back and forward undo and redo), every change asks the API again (debounced; only the
+// newest answer is shown), and each panel says so plainly when this server lacks its route. A preset is
+// tuned by the server (`tuning` of simulate and preview), so its preview and its simulation follow the
+// controls. Hooks for tests and tools: data-testid on values, plots and the preview image, and
 // body[data-pending] = requests in flight or scheduled.
+import { Comparison } from './ab.js';
 import { buildBodies } from './bodies.js';
-import { ApiError, Latest, callJson, debounce, hasRoute, loadRoutes } from './api.js';
+import { drawConstraint, showMassTerms } from './constraint_view.js';
+import { ApiError, Latest, callJson, debounce, hasRoute, loadRoutes, oscillationWords } from './api.js';
+import { download, exportName, stateFromDocument } from './exchange.js';
+import { designerMessage, inputProblems } from './input_check.js';
 import { responseSeries } from './oscillator.js';
+import { drawLanes, oscillatorLanes } from './oscillator_lanes.js';
 import { drawError, drawResponse, drawSimulation, drawWorkPrecision, showUnavailable } from './plots.js';
+import { fetchPresetScene, fillJointPicker, fillPresetList, isBox2dScene } from './presets.js';
 import { PreviewPlayer } from './preview.js';
 import { showEngines, watchEngineValues } from './engine_table.js';
-import { copyText, fmt, formatPercent, showNumbers, showStability } from './results.js';
+import { chainField, showChain } from './chain.js';
+import { copyText, fmt, showNumbers, showStability, showSummary } from './results.js';
+import { probeUnit, showJoints, showProbes, tunedJoints } from './simulate_panel.js';
 import {
-  OSCILLATION_ZETA, fromQuery, readForm, stateFromScene, toQuery, tuneRequest, tunedScene, tuningFields,
-  writeForm,
+  fromQuery, presetRequest, previewRequest, readForm, stateFromScene, toQuery, tuneRequest, tuningFields, writeForm,
 } from './state.js';
 
 const form = document.getElementById('controls');
@@ -19,22 +28,38 @@ const results = document.getElementById('results');
 const status = document.getElementById('status');
 const $ = (id) => document.getElementById(id);
 const player = new PreviewPlayer($('preview-panel'));
+const comparison = new Comparison(document.querySelector('main'), $('preview'), $('preview-a'));
+let lastSeries = null;  // the response series of the answer shown, for pinning it as A
+let lanes = [];         // a preset's 1-D oscillators, drawn beside its preview at the same scene time
+new MutationObserver(() => {
+  if (lanes.length === 0) return;
+  const img = $('preview');
+  drawLanes($('lanes'), lanes, Number(img.dataset.frame ?? 0) * (Number(img.dataset.frameSeconds) || 0));
+}).observe($('preview'), { attributes: true, attributeFilter: ['data-frame'] });
 
 buildBodies($('bodies'), $('body-template'));
 
-/// The defaults are the values written in index.html; the URL carries only what differs from them.
+/// The defaults are the values written in index.html; the URL carries only what differs from them, or,
+/// with a preset, from that preset's own step and tuning (so `?preset=stiff` is the stiff preset as it is).
 const DEFAULTS = readForm(form);
-const PREVIEW_FRAMES = 60;
-const PREVIEW_SIZE = '480x270';
+let urlDefaults = DEFAULTS;
 
 const channels = { tune: new Latest(), simulate: new Latest(), accuracy: new Latest(), preview: new Latest() };
-let presetScene = null;  // the scene JSON of the picked preset, once loaded
+let words = {};          // oscillation word -> damping ratio, from the server's OpenAPI document
+let presetScene = null;  // the scene document of the picked preset, once loaded
+let presetJoints = null; // a Box2D preset's tuned joints (their masses come from its bodies), once simulated
 let pending = 0;
 
 function busy(delta) {
   pending += delta;
   document.body.dataset.pending = String(pending);
   status.textContent = pending > 0 ? 'Updating…' : status.dataset.error ?? 'Up to date';
+}
+
+function setError(text) {
+  if (text) status.dataset.error = text;
+  else delete status.dataset.error;
+  busy(0);
 }
 
 /// debounce() whose waiting counts as pending work, so body[data-pending] = 0 means truly idle: nothing
@@ -64,11 +89,18 @@ async function tracked(promise) {
 
 // ---- controls -------------------------------------------------------------------------------------
 
+const box2dPreset = (state) => Boolean(state.preset) && state.preset !== 'oscillator';
+
 function syncControls() {
   const state = readForm(form);
   const constraint = state.body === 'constraint';
-  $('mass-group').hidden = constraint;
-  $('constraint-group').hidden = !constraint;
+  // A Box2D preset's numbers describe one of its joints, whose bodies give the mass: the body controls
+  // apply only to a custom body (or a preset without tuned joints, or the 1-D oscillator preset).
+  const jointMass = box2dPreset(state) && presetJoints?.length > 0;
+  $('joint-group').hidden = !box2dPreset(state);
+  $('body-group').hidden = jointMass || state.preset === 'oscillator';
+  $('mass-group').hidden = jointMass || constraint;
+  $('constraint-group').hidden = jointMass || !constraint;
   for (const p of ['a', 'b']) {
     const fs = form.querySelector(`[data-body="${p}"]`);
     const isStatic = state[`${p}_static`] === '1';
@@ -78,25 +110,36 @@ function syncControls() {
   $('frames-out').textContent = state.frames;
   $('zeta-out').textContent = Number(state.zeta).toFixed(2);
   const f = Number(state.basis) / Number(state.frames);
-  $('frames-hz').textContent = Number.isFinite(f) ? `= ${fmt(f)} Hz (${state.frames} frames at ${state.basis} fps)` : '';
+  $('frames-hz').textContent = state.basis !== '' && Number.isFinite(f) ? `= ${fmt(f)} Hz (${state.frames} frames at ${state.basis} fps)` : '';
 }
 
-function updateUrl() {
-  const query = toQuery(readForm(form), DEFAULTS);
-  history.replaceState(null, '', query ? `?${query}` : location.pathname);
+// One history entry per gesture: the first input after a committed change opens an entry, later inputs
+// of the same drag or typing replace it, and the change event closes it.
+let entryOpen = false;
+function updateUrl(commit) {
+  const query = toQuery(readForm(form), urlDefaults);
+  const url = query ? `?${query}` : location.pathname;
+  if (`${location.pathname}${location.search}` !== (query ? `${location.pathname}?${query}` : location.pathname)) {
+    if (entryOpen) history.replaceState(null, '', url);
+    else history.pushState(null, '', url);
+  }
+  entryOpen = !commit;
 }
 
 function onInput(event) {
   const t = event.target;
-  if (t.name === 'osc') $('zeta').value = String(OSCILLATION_ZETA[t.value]);
+  if (!t.name) return;
+  if (t.name === 'osc' && t.value in words) $('zeta').value = String(words[t.value]);
   if (t.name === 'zeta') for (const r of form.querySelectorAll('input[name="osc"]')) r.checked = false;
   if (t.name === 'preset') {
     if (event.type !== 'change') return;
     loadPreset(t.value, true);
+    return;
   }
   syncControls();
-  updateUrl();
+  updateUrl(event.type === 'change');
   scheduleTune();
+  if (box2dPreset(readForm(form))) schedulePreview();
 }
 
 // ---- errors next to their fields ------------------------------------------------------------------
@@ -104,35 +147,80 @@ function onInput(event) {
 function clearErrors() {
   for (const out of form.querySelectorAll('.error')) out.textContent = '';
   for (const f of form.querySelectorAll('.invalid')) f.classList.remove('invalid');
+  for (const el of form.querySelectorAll('[aria-invalid]')) el.removeAttribute('aria-invalid');
 }
 
-/// The field group whose data-field is the longest prefix of the problem's dotted path.
+/// The field group whose data-field is the longest prefix of the problem's dotted path (a preset's
+/// `tuning.fps` is the page's fps).
 function fieldGroup(path) {
+  const p = path.replace(/^tuning\./, '');
   let best = null;
   for (const g of form.querySelectorAll('[data-field]')) {
     const f = g.dataset.field;
-    const matches = path === f || path.startsWith(`${f}.`) || path.startsWith(`${f}[`);
+    const matches = p === f || p.startsWith(`${f}.`) || p.startsWith(`${f}[`);
     if (matches && !g.closest('[hidden]') && (!best || f.length > best.dataset.field.length)) best = g;
   }
   return best;
 }
 
+function markInvalid(group, message) {
+  group.querySelector('.error').textContent = message;
+  group.classList.add('invalid');
+  for (const el of group.querySelectorAll('input, select')) el.setAttribute('aria-invalid', 'true');
+}
+
+function groupLabel(group) {
+  const label = group.querySelector('label, .label');
+  return label ? label.textContent.replace(/\s*\(.*$/s, '').replace(/:.*$/s, '').trim() : '';
+}
+
+/// Shows an API problem at its field, in designer words; returns the sentence for the status line.
 function showProblem(error) {
   const field = error.field ?? '';
   const group = field ? fieldGroup(field) : null;
-  const message = group ? error.message : `${field ? `${field}: ` : ''}${error.message}`;
-  const out = group ? group.querySelector('.error') : $('form-error');
-  out.textContent = message;
-  group?.classList.add('invalid');
+  const message = designerMessage(error.message, group ? groupLabel(group) : '');
+  if (group) markInvalid(group, message);
+  else $('form-error').textContent = message;
+  return message;
+}
+
+/// The page's own check: empty or non-numeric fields are shown at the field and nothing is sent.
+function refuseInput() {
+  const problems = inputProblems(form);
+  if (problems.length === 0) return false;
+  clearErrors();
+  for (const { el, message } of problems) {
+    const group = el.closest('.field');
+    const out = group.querySelector('.error');
+    out.textContent = out.textContent ? `${out.textContent} ${message}` : message;
+    group.classList.add('invalid');
+    el.setAttribute('aria-invalid', 'true');
+  }
+  results.classList.add('stale');
+  const more = problems.length > 1 ? ` (and ${problems.length - 1} more)` : '';
+  setError(`Not updated: ${problems[0].message}${more}`);
+  return true;
 }
 
 // ---- tune -----------------------------------------------------------------------------------------
 
-const scheduleTune = trackedDebounce(runTune, 120);
+// Short waits: a drag sends few requests (a newer one aborts the older), yet the numbers follow at once.
+const scheduleTune = trackedDebounce(runTune, 30);
+let tuneShown = 0;  // answers shown so far: a newer one drops the older one's plots
 
 async function runTune() {
-  const state = readForm(form);
-  const request = tuneRequest(state);
+  if (refuseInput()) return;
+  let state = readForm(form);
+  if (box2dPreset(state) && presetJoints === null) {
+    // The joints' effective masses come from the preset's bodies: the first simulation reports them.
+    await runSimulate(state, null);
+    state = readForm(form);
+  }
+  const joint = presetJoints?.find((j) => j.id === state.joint);
+  const request = tuneRequest(state, box2dPreset(state) && joint ? joint.model_mass : undefined);
+  const chain = chainField($('chain-mass-ratio')?.value);  // no name: not part of the URL state
+  $('chain-error').textContent = chain instanceof Error ? chain.message : '';
+  if (chain && !(chain instanceof Error)) request.chain = chain;
   results.classList.add('stale');
   let tune;
   try {
@@ -140,27 +228,56 @@ async function runTune() {
   } catch (e) {
     if (!(e instanceof ApiError)) throw e;
     clearErrors();
-    showProblem(e);
-    status.dataset.error = e.status === 0 ? e.message : `The API refused this tuning: ${e.message}`;
-    busy(0);
+    const message = showProblem(e);
+    setError(e.status === 0 ? e.message : `Not updated: ${message}`);
     return;
   }
   if (tune === Latest.stale) return;
   clearErrors();
-  delete status.dataset.error;
-  busy(0);
+  setError('');
+  // The slider follows the word the server mapped (when the page could not read the mapping itself).
+  if (state.osc && typeof tune.requested?.damping_ratio === 'number') {
+    $('zeta').value = String(tune.requested.damping_ratio);
+    $('zeta-out').textContent = tune.requested.damping_ratio.toFixed(2);
+  }
   window.softtune = { request, tune };
   results.classList.remove('stale');
+  showSummary($('summary'), tune, joint ? `joint ${joint.id}` : '');
   showNumbers(results, tune);
+  comparison.showNumbers();
+  // Let the numbers paint before the tables and plots are built (a frame, then the rest).
+  const seq = ++tuneShown;
+  await tracked(new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0))));
+  if (seq !== tuneShown) return;
+  $('mass-terms').hidden = !showMassTerms($('mass-terms-table').querySelector('tbody'), tune, state.ctype === 'angular');
+  if (!$('mass-terms').hidden) drawConstraint($('constraint-drawing'), state);
   showStability(results, tune, Number(state.fps), Number(state.substeps));
   showEngines(results, tune);
+  showChain(document, tune);
   const series = responseSeries(tune);
-  drawResponse($('plot-response'), series);
+  lastSeries = series;
+  drawResponse($('plot-response'), series, chosenMethod(tune), comparison.pinned?.series);
   $('response-note').textContent = sameCurve(series.methods.soft, series.methods.implicit_euler)
     ? 'The soft constraint and implicit Euler draw one curve: they are the same integrator (Catto, GDC 2011).' : '';
   drawError($('plot-error'), series);
   scheduleSlow(state, request, tune);
 }
+
+const chosenMethod = (tune) => (tune.mode === 'exact' ? 'soft_exact' : 'soft');
+
+function describeTuning(state) {
+  const feel = state.osc ? `${state.osc} oscillation` : `damping ratio ${state.zeta}`;
+  return `${state.preset || 'custom'}, ${state.frames} frames, ${feel}, ${state.mode}`;
+}
+
+$('pin').addEventListener('click', () => {
+  const tune = window.softtune?.tune;
+  if (comparison.pinned || !tune) comparison.unpin();
+  else comparison.pin(tune, lastSeries, chosenMethod(tune), { frames: player.frames, dt: player.frameSeconds }, describeTuning(readForm(form)));
+  $('pin').textContent = comparison.pinned ? 'Unpin A' : 'Pin as A';
+  $('pin').setAttribute('aria-pressed', comparison.pinned ? 'true' : 'false');
+  scheduleTune();
+});
 
 function sameCurve(a, b) {
   return a && b && a.every((x, i) => (x === null ? b[i] === null : Math.abs(x - b[i]) <= 1e-9));
@@ -168,20 +285,27 @@ function sameCurve(a, b) {
 
 // ---- the slower panels: simulate, accuracy, preview ------------------------------------------------
 
+// The preview first: it is what a designer watches. The wait lets a drag settle before frames are
+// rendered (a render in the pool is not cancelled when a newer tuning arrives).
 const scheduleSlow = trackedDebounce((state, request, tune) => {
+  runPreview(state, tune);
   runSimulate(state, tune);
   runAccuracy(request);
-  runPreview(state, tune);
-}, 350);
+}, 100);
+// A Box2D preset's preview needs no tune answer (the server tunes the scene): it starts with the change.
+const schedulePreview = trackedDebounce(() => {
+  const state = readForm(form);
+  if (box2dPreset(state) && inputProblems(form).length === 0) runPreview(state, null);
+}, 60);
 
 function unavailable(what) {
   return `${what} is not available on this server.`;
 }
 
-/// The scene to simulate: the picked preset with the page's step and tuning, or a 1-D
-/// oscillator with the effective mass the tune answer computed (from the mass or the 2-D constraint).
-function sceneFor(state, tune) {
-  if (state.preset) return presetScene ? tunedScene(presetScene, state) : { preset: state.preset };
+/// What to simulate: the picked preset tuned by the page (server/app/scene_tuning.h), or a 1-D oscillator
+/// with the effective mass the tune answer computed (from the mass or the 2-D constraint).
+function simulateRequest(state, tune) {
+  if (state.preset) return presetRequest(state);
   const f = tune.requested?.frequency_hz ?? 0;
   return {
     name: 'custom',
@@ -190,6 +314,28 @@ function sceneFor(state, tune) {
       initial_displacement: 1, ...tuningFields(state) }],
     probes: [{ id: 'body', kind: 'oscillator', oscillator: 'body' }],
   };
+}
+
+/// The joint table and picker from a simulate answer of a Box2D preset.
+function showPresetJoints(state, doc) {
+  const joints = tunedJoints(doc);
+  const first = presetJoints === null;
+  presetJoints = joints;
+  const select = $('joint');
+  const picked = fillJointPicker(select, joints, select.dataset.pending || state.joint);
+  delete select.dataset.pending;
+  showJoints($('joints').querySelector('tbody'), joints, picked);
+  $('joints').closest('.scroll').hidden = joints.length === 0;
+  select.disabled = joints.length === 0;
+  $('joint-note').textContent = joints.length === 0
+    ? 'This scene has no designer-tuned joint: the tuning changes only its step (fps, substeps); the numbers tune the body below.'
+    : `The numbers describe ${picked}: ${fmt(joints.find((j) => j.id === picked)?.model_mass)} ${joints.find((j) => j.id === picked)?.angular ? 'kg m²' : 'kg'} of effective mass from its bodies. Every joint listed takes this tuning.`;
+  if (first) {
+    // The first joint is the preset's default: a link names a joint only when it picks another.
+    urlDefaults = { ...urlDefaults, joint: joints[0]?.id ?? '' };
+    syncControls();
+    if (picked !== state.joint) updateUrl(true);
+  }
 }
 
 async function runSimulate(state, tune) {
@@ -203,33 +349,25 @@ async function runSimulate(state, tune) {
     note.textContent = unavailable('Simulation');
     body.replaceChildren();
     table.hidden = true;
+    if (box2dPreset(state)) presetJoints = [];
     return;
   }
   try {
-    const doc = await tracked(channels.simulate.run((signal) => callJson('POST', 'api/v1/simulate', sceneFor(state, tune), signal)));
+    const doc = await tracked(channels.simulate.run((signal) => callJson('POST', 'api/v1/simulate', simulateRequest(state, tune), signal)));
     if (doc === Latest.stale) return;
+    if (box2dPreset(state)) showPresetJoints(state, doc);
+    lanes = box2dPreset(state) ? oscillatorLanes(doc.probes) : [];
+    $('lanes-figure').hidden = lanes.length === 0;
     note.textContent = doc.stages ? `Stages run: ${doc.stages.join(', ')}` : '';
     figure.hidden = false;
-    drawSimulation($('plot-simulation'), doc.probes ?? []);
-    body.replaceChildren(...(doc.probes ?? []).map((p) => {
-      const tr = document.createElement('tr');
-      const pct = (e) => formatPercent(e === null || e === undefined ? null : 100 * e);
-      const cells = [p.id ?? '', fmt(p.requested?.frequency_hz), fmt(p.measured?.frequency_hz), pct(p.error?.frequency),
-        fmt(p.requested?.damping_ratio), fmt(p.measured?.damping_ratio), pct(p.error?.damping_ratio),
-        fmt(p.measured?.overshoot), fmt(p.measured?.settle_frames)];
-      for (const [i, v] of cells.entries()) {
-        const td = document.createElement(i === 0 ? 'th' : 'td');
-        if (i === 0) td.scope = 'row';
-        td.textContent = v;
-        tr.append(td);
-      }
-      return tr;
-    }));
+    drawSimulation($('plot-simulation'), doc.probes ?? [], probeUnit);
+    showProbes(body, doc.probes ?? []);
   } catch (e) {
     if (!(e instanceof ApiError)) throw e;
+    if (box2dPreset(state) && presetJoints === null) presetJoints = [];
     body.replaceChildren();
     table.hidden = e.unavailable;
-    note.textContent = e.unavailable ? unavailable('Simulation') : `Simulation refused: ${e.field ? `${e.field}: ` : ''}${e.message}`;
+    note.textContent = e.unavailable ? unavailable('Simulation') : `Simulation refused: ${designerMessage(e.message, e.field)}`;
   }
 }
 
@@ -257,21 +395,12 @@ async function runAccuracy(request) {
   } catch (e) {
     if (!(e instanceof ApiError)) throw e;
     showUnavailable(el, e.unavailable ? unavailable('The work-precision chart (POST /api/v1/accuracy)')
-      : `Accuracy run refused: ${e.field ? `${e.field}: ` : ''}${e.message}`);
+      : `Accuracy run refused: ${designerMessage(e.message, e.field)}`);
     note.textContent = '';
   }
 }
 
-/// The preview contract (docs/preview.md): a Box2D preset by name, or the 1-D oscillator with the
-/// tuning fields of `softtune tune` (a custom body, or the oscillator preset) and the effective mass the
-/// tune answer computed (from the mass or the 2-D constraint). `wait: false` answers at once, so the
-/// progress bar can follow the render.
-function previewRequest(state, tune) {
-  const settings = { frames: PREVIEW_FRAMES, size: PREVIEW_SIZE, wait: false };
-  if (state.preset && state.preset !== 'oscillator') return { preset: state.preset, ...settings };
-  const { constraint, ...fields } = tuneRequest(state);
-  return { ...fields, effective_mass: tune.effective_mass, ...settings };
-}
+let lastPreview = '';  // the request of the preview shown or on its way
 
 async function runPreview(state, tune) {
   const note = $('preview-note');
@@ -283,89 +412,75 @@ async function runPreview(state, tune) {
     note.textContent = unavailable('The rendered preview');
     return;
   }
+  const request = previewRequest(state, tune, presetScene);
+  const text = JSON.stringify(request);
+  if (text === lastPreview) return;  // asked already (a preset's preview starts with the change)
+  lastPreview = text;
+  $('preview').dataset.request = text;  // what this preview shows, for tests and tools
   try {
     const doc = await tracked(channels.preview.run(async (signal) => {
       player.rendering(null);
-      let answer = await callJson('POST', 'api/v1/preview', previewRequest(state, tune), signal);
-      // A preview still rendering answers with its id and progress: ask again until the frames are listed.
+      const first = await callJson('POST', 'api/v1/preview', request, signal);
+      // "From the cache" only when the first answer already had every frame from it.
+      const fromCache = first.cached === true && Array.isArray(first.frames);
+      let answer = first;
+      let shownFirst = false;
+      // A preview still rendering answers with its id and progress: ask again until the frames are listed,
+      // showing frame 0 as soon as it is encoded (frames stream).
       while (!Array.isArray(answer.frames) && answer.id) {
+        if (answer.status === 'failed') throw new ApiError(500, { detail: 'the preview failed to render' });
         player.rendering(answer.progress ?? answer);
-        await new Promise((r) => setTimeout(r, 250));
+        if (!shownFirst && answer.progress?.ready >= 1 && answer.progress_url) {
+          player.first(`${answer.progress_url}/0.png`);
+          shownFirst = true;
+        }
+        await new Promise((r) => setTimeout(r, 50));
         if (signal.aborted) throw new DOMException('aborted', 'AbortError');
         answer = await callJson('GET', `api/v1/preview/${encodeURIComponent(answer.id)}`, undefined, signal);
       }
-      return answer;
+      return { ...answer, fromCache, frameSeconds: first.frame_dt_s, warnings: first.warnings ?? [] };
     }));
     if (doc === Latest.stale) return;
-    player.load(doc.frames ?? [], doc.filmstrip);
+    player.load(doc.frames ?? [], doc.filmstrip, doc.frameSeconds);
+    const n = doc.frames?.length ?? 0;
+    const seconds = doc.frameSeconds > 0 ? `, ${fmt(Math.round((n - 1) * doc.frameSeconds * 100) / 100)} s of ${state.preset || 'oscillator'} played in real time` : '';
     const ms = doc.timings?.wall_ms;
-    note.textContent = `${doc.frames?.length ?? 0} frames${ms !== undefined && ms !== null ? `, rendered in ${fmt(ms)} ms` : ''}${doc.cached ? ' (from the cache)' : ''}`;
+    const rendered = doc.fromCache ? ' (from the cache)' : ms !== undefined && ms !== null ? `, rendered in ${fmt(Math.round(ms))} ms` : '';
+    note.textContent = `${n} frames${seconds}${rendered}`;
   } catch (e) {
+    lastPreview = '';
     if (!(e instanceof ApiError)) throw e;
     player.clear();
     panel.hidden = e.unavailable;
-    note.textContent = e.unavailable ? unavailable('The rendered preview') : `Preview refused: ${e.field ? `${e.field}: ` : ''}${e.message}`;
+    note.textContent = e.unavailable ? unavailable('The rendered preview') : `Preview refused: ${designerMessage(e.message, e.field)}`;
   }
 }
 
 // ---- presets --------------------------------------------------------------------------------------
 
-async function loadPresetList() {
-  const select = $('preset');
-  const note = $('preset-note');
-  if (!hasRoute('GET', '/api/v1/presets')) {
-    note.textContent = 'Presets are not available on this server: tune a custom body.';
-    select.disabled = true;
-    return;
-  }
-  try {
-    const doc = await tracked(callJson('GET', 'api/v1/presets'));
-    const list = Array.isArray(doc) ? doc : doc.presets ?? [];
-    for (const item of list) {
-      const name = typeof item === 'string' ? item : item.name;
-      const option = new Option(typeof item === 'string' ? item : item.title ?? item.name, name);
-      if (item.description) option.title = item.description;
-      select.append(option);
-    }
-    if (select.dataset.pending) {
-      select.value = select.dataset.pending;
-      delete select.dataset.pending;
-      if (select.value) await loadPreset(select.value, false);
-    }
-  } catch (e) {
-    if (!(e instanceof ApiError)) throw e;
-    note.textContent = e.unavailable ? 'Presets are not available on this server: tune a custom body.' : e.message;
-    select.disabled = e.unavailable;
-  }
-}
-
 /// Loads a preset's scene; `adopt` copies its step and tuning into the controls (a user's pick), while a
-/// reload keeps the controls the link holds.
+/// link or a history step keeps the controls it holds. Either way the numbers, simulation and preview
+/// then run on that preset.
 async function loadPreset(name, adopt) {
   presetScene = null;
-  const note = $('preset-note');
-  note.textContent = '';
-  if (!name) return;
-  if (!hasRoute('GET', '/api/v1/presets/{name}')) {
-    note.textContent = 'This server cannot send preset scenes; the preset is simulated by name.';
-    return;
-  }
-  try {
-    const doc = await tracked(callJson('GET', `api/v1/presets/${encodeURIComponent(name)}`));
+  presetJoints = null;
+  urlDefaults = DEFAULTS;
+  $('preset-note').textContent = '';
+  $('joints').querySelector('tbody').replaceChildren();
+  if (name) {
+    const { scene, note } = await tracked(fetchPresetScene(name));
     if ($('preset').value !== name) return;
-    presetScene = doc.scene ?? doc;
-    // The numbers above tune the body in the controls; the simulation and preview run the preset's own bodies.
-    note.textContent = presetScene.description ?? '';
-    if (adopt) {
-      writeForm(form, stateFromScene(presetScene));
-      syncControls();
-      updateUrl();
-      scheduleTune();
-    }
-  } catch (e) {
-    if (!(e instanceof ApiError)) throw e;
-    note.textContent = e.message;
+    presetScene = scene;
+    $('preset-note').textContent = scene?.description ?? note;
+    if (scene) urlDefaults = { ...DEFAULTS, ...stateFromScene(scene, words) };
+    writeForm(form, adopt ? { ...urlDefaults, preset: name } : fromQuery(location.search, urlDefaults, words));
+    if (scene && !isBox2dScene(scene)) presetJoints = [];
+  } else if (!adopt) {
+    writeForm(form, fromQuery(location.search, DEFAULTS, words));
   }
+  syncControls();
+  if (adopt) updateUrl(true);
+  scheduleTune();
 }
 
 // ---- start ----------------------------------------------------------------------------------------
@@ -378,15 +493,63 @@ $('copy-link').addEventListener('click', async (e) => {
   e.target.textContent = (await copyText(location.href)) ? 'Link copied' : 'Copy failed';
   setTimeout(() => { e.target.textContent = 'Copy link'; }, 1500);
 });
-window.addEventListener('popstate', () => {
-  writeForm(form, fromQuery(location.search, DEFAULTS));
-  syncControls();
-  scheduleTune();
+$('export').addEventListener('click', () => {
+  const state = readForm(form);
+  download(simulateRequest(state, window.softtune?.tune ?? {}), exportName(state));
+});
+$('import').addEventListener('change', async (e) => {
+  const file = e.target.files?.[0];
+  e.stopPropagation();
+  if (!file) return;
+  try {
+    const next = stateFromDocument(JSON.parse(await file.text()), words);
+    // The URL holds what differs from the preset's own tuning, so that scene is read first.
+    let defaults = DEFAULTS;
+    if (next.preset) {
+      const { scene } = await fetchPresetScene(next.preset);
+      if (scene) defaults = { ...DEFAULTS, ...stateFromScene(scene, words) };
+    }
+    const query = toQuery({ ...defaults, ...next }, defaults);
+    history.pushState(null, '', query ? `?${query}` : location.pathname);
+    $('form-error').textContent = '';
+    await restoreFromUrl();
+  } catch (err) {
+    $('form-error').textContent = `Import refused: ${err.message}`;
+  }
+  e.target.value = '';
 });
 
-writeForm(form, fromQuery(location.search, DEFAULTS));
-syncControls();
+/// The controls of the address bar's query (a history step, an import).
+async function restoreFromUrl() {
+  const before = $('preset').value;
+  const named = fromQuery(location.search, DEFAULTS, words).preset;
+  entryOpen = false;
+  if (named !== before) {
+    $('preset').value = named;
+    await loadPreset(named, false);
+  } else {
+    writeForm(form, fromQuery(location.search, urlDefaults, words));
+    syncControls();
+    scheduleTune();
+  }
+}
+window.addEventListener('popstate', restoreFromUrl);
+
 busy(0);
 await loadRoutes();
-runTune();
-loadPresetList();
+words = oscillationWords();
+writeForm(form, fromQuery(location.search, DEFAULTS, words));
+syncControls();
+const listNote = await tracked(fillPresetList($('preset')));
+if (listNote) {
+  $('preset-note').textContent = listNote;
+  $('preset').disabled = true;
+}
+const select = $('preset');
+if (select.dataset.pending) {
+  select.value = select.dataset.pending;
+  delete select.dataset.pending;
+}
+// A link that names a preset previews and simulates that preset with the link's tuning, from the start.
+if (select.value) await loadPreset(select.value, false);
+else runTune();

@@ -5,8 +5,9 @@
 // [x1, v1] = A [x0, v0], and the tune response carries A as `stability[method].step_matrix` (built by the
 // server stepping the unit states through that very integrator, at h = 1 / (fps * substeps)). Iterating A
 // from x0 = 1, v0 = 0 therefore replays explicit Euler, semi-implicit Euler, implicit Euler, the soft
-// constraint and the exact soft constraint step by step. The exact motion is the closed-form solution of
-// m x'' + c x' + k x = 0 at the requested omega and zeta (core/src/analytic.cpp, same cases).
+// constraint and the exact soft constraint step by step. The exact motion comes from the answer too
+// (`exact_motion`, core/src/analytic.cpp): its one-step flow, replayed the same way, gives the closed form
+// on the step grid, and its fine samples draw the smooth curve; the page keeps no copy of the formula.
 
 export const METHODS = ['explicit_euler', 'semi_implicit_euler', 'implicit_euler', 'soft', 'soft_exact'];
 
@@ -24,25 +25,6 @@ export const BLOWUP_LIMIT = 1e6;
 export const MAX_SAMPLES = 4000;
 /// Steps replayed at most (a few tens of ms in a browser), so no step size can freeze the page.
 export const MAX_STEPS = 2e7;
-
-/// Position x(t) of m x'' + c x' + k x = 0 from x(0) = x0, x'(0) = v0, for natural angular frequency
-/// omega (rad/s) and damping ratio zeta (SPEC.md 1; under-damped: decaying cosine/sine at
-/// omega_d = omega sqrt(1 - zeta^2); critical: (x0 + (v0 + omega x0) t) e^(-omega t); over-damped: two
-/// real roots, the slow one written as -omega / (zeta + sqrt(zeta^2 - 1)) to avoid cancellation).
-export function analyticPosition(x0, v0, omega, zeta, t) {
-  if (omega === 0) return x0 + v0 * t;
-  if (zeta < 1) {
-    const wd = omega * Math.sqrt(1 - zeta * zeta);
-    const b = (v0 + zeta * omega * x0) / wd;
-    return Math.exp(-zeta * omega * t) * (x0 * Math.cos(wd * t) + b * Math.sin(wd * t));
-  }
-  if (zeta === 1) return Math.exp(-omega * t) * (x0 + (v0 + omega * x0) * t);
-  const root = Math.sqrt(zeta * zeta - 1);
-  const r1 = -omega / (zeta + root);
-  const r2 = -omega * (zeta + root);
-  const a = (v0 - r2 * x0) / (r1 - r2);
-  return a * Math.exp(r1 * t) + (x0 - a) * Math.exp(r2 * t);
-}
 
 /// x_(n stride) for n = 0..samples of the linear map [x, v] <- A [x, v] from (x0, v0), every step taken;
 /// null once |x| passes BLOWUP_LIMIT or stops being finite (and for every later sample).
@@ -68,33 +50,27 @@ function usableMatrix(m) {
     row.every((e) => typeof e === 'number' && Number.isFinite(e)));
 }
 
-/// Seconds to show: three periods of the requested natural frequency, or 1 s without a spring.
-export function plotDuration(frequencyHz) {
-  return frequencyHz > 0 ? 3 / frequencyHz : 1;
-}
-
-/// Points of the smooth exact curve: a method takes few steps per period, the true motion is drawn finely.
-export const EXACT_POINTS = 600;
-
 /// Plot data from a tune response: {t, exact, methods: {name: x[]}, error: {name: |x - exact|[]},
-/// smooth: {t, x} (the exact motion on a fine grid), stride, truncated}. Methods whose step matrix is
-/// missing (or not finite) are left out.
+/// smooth: {t, x} (the exact motion on a fine grid), stride, truncated}, over the answer's
+/// `exact_motion.duration_s` (three periods of the requested frequency). Methods whose step matrix is
+/// missing (or not finite) are left out; without a usable `exact_motion` there is no exact curve or error.
 export function responseSeries(tune) {
   const h = tune.h;
-  const omega = tune.omega ?? 0;
-  const zeta = tune.damping_ratio ?? 0;
-  const wanted = Math.ceil(plotDuration(tune.requested?.frequency_hz ?? tune.frequency_hz ?? 0) / h);
+  const motion = tune.exact_motion ?? {};
+  // Steps to cover the duration; 1e-9 keeps a whole number of steps (0.1 s at 60 fps) from rounding up.
+  const wanted = Math.ceil((motion.duration_s ?? 1) / h - 1e-9);
   const steps = Math.max(1, Math.min(MAX_STEPS, wanted));
   const stride = Math.ceil(steps / MAX_SAMPLES);
   const samples = Math.floor(steps / stride);
   const t = Array.from({ length: samples + 1 }, (_, n) => n * stride * h);
-  const exact = t.map((ti) => analyticPosition(1, 0, omega, zeta, ti));
+  const exact = usableMatrix(motion.step_matrix) ? replay(motion.step_matrix, 1, 0, samples, stride) : null;
   const methods = {}, error = {};
   for (const name of METHODS) {
     const matrix = tune.stability?.[name]?.step_matrix;
     if (!usableMatrix(matrix)) continue;
     const xs = replay(matrix, 1, 0, samples, stride);
     methods[name] = xs;
+    if (!exact) continue;
     // Log-scale plot: an exact zero (t = 0) has no place on it, so it is left out.
     error[name] = xs.map((x, n) => {
       if (x === null) return null;
@@ -102,8 +78,12 @@ export function responseSeries(tune) {
       return e > 0 ? e : null;
     });
   }
-  const end = t[t.length - 1];
-  const fine = t.length >= EXACT_POINTS ? t : Array.from({ length: EXACT_POINTS + 1 }, (_, i) => (end * i) / EXACT_POINTS);
-  const smooth = { t: fine, x: fine.map((ti) => analyticPosition(1, 0, omega, zeta, ti)) };
-  return { t, exact, methods, error, smooth, stride, truncated: wanted > MAX_STEPS };
+  const fine = motion.smooth;
+  let smooth = { t: [], x: [] };
+  if (exact && Array.isArray(fine?.x) && fine.x.length > t.length) {
+    smooth = { t: fine.x.map((_, i) => i * fine.dt_s), x: fine.x };
+  } else if (exact) {
+    smooth = { t, x: exact };
+  }
+  return { t, exact: exact ?? [], methods, error, smooth, stride, truncated: wanted > MAX_STEPS };
 }

@@ -29,11 +29,71 @@ function draw(el, opts, data) {
   const chart = new uPlot({ width: width(el), height: height(el), ...opts }, data, el);
   charts.set(el, chart);
   el.dataset.points = String(data[0].length);
+  tableBehind(el, opts.series.map((s) => s.label), data);
+}
+
+/// Rows a plot's data table shows at most (every n-th sample beyond that).
+export const TABLE_ROWS = 200;
+
+/// The plot's numbers as a table (accessibility: what the chart shows, for a screen reader or a copy),
+/// behind a "Data table" disclosure after the chart; built when opened, so redraws stay cheap.
+function tableBehind(el, labels, data) {
+  let details = el.parentElement.querySelector(`details[data-for="${el.id}"]`);
+  if (!details) {
+    details = document.createElement('details');
+    details.dataset.for = el.id;
+    details.className = 'data-table';
+    details.addEventListener('toggle', () => fillTable(details));
+    el.after(details);
+  }
+  details.hidden = false;
+  details.plot = { labels, data };
+  fillTable(details);
+}
+
+function fillTable(details) {
+  const summary = document.createElement('summary');
+  summary.textContent = 'Data table';
+  if (!details.open || !details.plot) {
+    details.replaceChildren(summary);
+    return;
+  }
+  const { labels, data } = details.plot;
+  const n = data[0].length;
+  const step = Math.max(1, Math.ceil(n / TABLE_ROWS));
+  const table = document.createElement('table');
+  const head = table.createTHead().insertRow();
+  for (const label of labels) {
+    const th = document.createElement('th');
+    th.scope = 'col';
+    th.textContent = label;
+    head.append(th);
+  }
+  const body = table.createTBody();
+  for (let i = 0; i < n; i += step) {
+    const tr = body.insertRow();
+    data.forEach((column, j) => {
+      const cell = document.createElement(j === 0 ? 'th' : 'td');
+      if (j === 0) cell.scope = 'row';
+      const v = column[i];
+      cell.textContent = v === null || v === undefined ? '' : Number(v.toPrecision(6)).toString();
+      tr.append(cell);
+    });
+  }
+  const note = document.createElement('p');
+  note.className = 'note';
+  note.textContent = step > 1 ? `Every ${step}th of ${n} points.` : `${n} points.`;
+  const wrap = document.createElement('div');
+  wrap.className = 'scroll';
+  wrap.append(table);
+  details.replaceChildren(summary, note, wrap);
 }
 
 export function showUnavailable(el, text) {
   charts.get(el)?.destroy();
   charts.delete(el);
+  const details = el.parentElement?.querySelector(`details[data-for="${el.id}"]`);
+  if (details) details.hidden = true;
   el.classList.add('unavailable');
   el.textContent = text;
   el.dataset.points = '0';
@@ -57,11 +117,14 @@ const fmtAxis = (digits) => (u, vals) => vals.map((v) => (v === null ? '' : Numb
 const logAxis = (u, vals) => vals.map((v) => (v === null ? '' : v.toExponential(0).replace('e+', 'e')));
 
 /// Response plot: time (s) against x for the exact motion (on its fine grid) and each method (at its steps).
-export function drawResponse(el, series) {
+/// `chosen` (the mode's soft method) is drawn thick, the others thin, so the one the designer gets stands
+/// out; `pinned` (A of an A/B comparison: {t, x}) is A's chosen method, drawn grey and dashed.
+export function drawResponse(el, series, chosen, pinned) {
   resize.observe(el);
   const names = METHODS.filter((m) => series.methods[m]);
   const zip = (t, x) => t.map((ti, i) => [ti, x[i]]);
-  const data = aligned([zip(series.smooth.t, series.smooth.x), ...names.map((m) => zip(series.t, series.methods[m]))]);
+  const curves = [zip(series.smooth.t, series.smooth.x), ...names.map((m) => zip(series.t, series.methods[m]))];
+  if (pinned) curves.push(zip(pinned.t, pinned.x));
   draw(el, {
     scales: {
       x: { time: false },
@@ -72,8 +135,10 @@ export function drawResponse(el, series) {
     series: [{ label: 't (s)' },
       { label: 'exact', stroke: COLORS.exact, width: 2.5, dash: [6, 4], spanGaps: true, points: { show: false } },
       // Markers at each step while they are few enough to tell apart: they show where the method samples.
-      ...methodSeries(names, { spanGaps: true, points: { show: series.t.length <= 200 } })],
-  }, data);
+      ...names.map((m) => ({ label: m === chosen ? `${METHOD_LABELS[m]} (chosen)` : METHOD_LABELS[m], stroke: COLORS[m],
+        width: m === chosen ? 3.5 : 1.2, spanGaps: true, points: { show: series.t.length <= 200 && m === chosen } })),
+      ...(pinned ? [{ label: `A: ${pinned.label}`, stroke: '#8c959f', width: 2.5, dash: [3, 3], spanGaps: true, points: { show: false } }] : [])],
+  }, aligned(curves));
 }
 
 /// Error plot: time (s) against |x_method - x_exact|, log scale.
@@ -129,8 +194,9 @@ export function aligned(curves) {
 
 const PROBE_COLORS = ['#1f6feb', '#d1242f', '#1a7f37', '#bf8700', '#8250df', '#0a7ea4', '#cf222e', '#57606a'];
 
-/// The simulation's probes over time (POST /api/v1/simulate `probes[].series`), one line per probe.
-export function drawSimulation(el, probes) {
+/// The simulation's probes over time (POST /api/v1/simulate `probes[].series`), one line per probe, on one
+/// axis per unit: metres on the left, radians on the right (probeUnit, web/simulate_panel.js).
+export function drawSimulation(el, probes, unitOf) {
   resize.observe(el);
   const withSeries = probes.filter((p) => Array.isArray(p.series?.time) && p.series.time.length > 1);
   if (withSeries.length === 0) {
@@ -138,11 +204,27 @@ export function drawSimulation(el, probes) {
     return;
   }
   const curves = withSeries.map((p) => p.series.time.map((t, i) => [t, p.series.value[i]]).filter(([t]) => t !== null));
+  const units = [...new Set(withSeries.map((p) => unitOf(p.kind)))];
+  const axes = [{ label: 'time (s)', values: fmtAxis(3) }, ...units.map((u, i) => ({
+    scale: u, label: u === 'rad' ? 'angle (rad)' : 'length (m)', values: fmtAxis(3), size: 60, side: i === 0 ? 3 : 1,
+    grid: { show: i === 0 },
+  }))];
+  // A probe that blew up would flatten the others: each unit's axis spans the probes that did not
+  // (with a margin), and the blow-up leaves the plot at its edge.
+  const span = (u) => {
+    const values = withSeries.filter((p) => !p.diverged && unitOf(p.kind) === u).flatMap((p) => p.series.value)
+      .filter((v) => typeof v === 'number' && Number.isFinite(v));
+    if (values.length === 0) return {};
+    const lo = Math.min(...values), hi = Math.max(...values), pad = 0.15 * (hi - lo || Math.abs(hi) || 1);
+    return { range: [lo - pad, hi + pad] };
+  };
   draw(el, {
-    scales: { x: { time: false } },
-    axes: [{ label: 'time (s)', values: fmtAxis(3) }, { label: 'probe value', values: fmtAxis(3), size: 60 }],
+    scales: { x: { time: false }, ...Object.fromEntries(units.map((u) => [u, span(u)])) },
+    axes,
     series: [{ label: 't (s)' }, ...withSeries.map((p, i) => ({
-      label: p.id, stroke: PROBE_COLORS[i % PROBE_COLORS.length], width: 1.5, spanGaps: true,
+      label: `${p.id} (${unitOf(p.kind)})`, scale: unitOf(p.kind), stroke: PROBE_COLORS[i % PROBE_COLORS.length], width: 1.5,
+      spanGaps: true,
     }))],
   }, aligned(curves));
+  el.dataset.units = units.join(' ');
 }

@@ -1,14 +1,16 @@
-// The preview panel: rendered frames as an animation (play/pause, scrubber), a progress bar while they
-// render and load, and the filmstrip.
-
-const PLAYBACK_FPS = 30;
+// The preview panel: rendered frames as an animation played in real time (each frame held for the scene
+// time it stands for, `frame_dt_s` of the answer), starting by itself and looping, unless the designer
+// paused it; a scrubber, a progress bar while frames render and load, and the filmstrip.
 
 export class PreviewPlayer {
   #frames = [];
   #images = [];
   #index = 0;
-  #timer = 0;
+  #raf = 0;
   #generation = 0;
+  #dt = 1 / 30;       // s of scene time per frame
+  #startedAt = 0;     // performance.now() at which frame 0 would have shown
+  #userPaused = false;
 
   constructor(root) {
     this.img = root.querySelector('#preview');
@@ -17,11 +19,30 @@ export class PreviewPlayer {
     this.out = root.querySelector('#frame-out');
     this.progress = root.querySelector('#preview-progress');
     this.filmstrip = root.querySelector('#filmstrip');
-    this.play.addEventListener('click', () => (this.#timer ? this.pause() : this.start()));
+    this.play.addEventListener('click', () => {
+      this.#userPaused = this.playing;
+      if (this.playing) this.pause();
+      else this.start();
+    });
     this.scrub.addEventListener('input', () => {
+      this.#userPaused = true;
       this.pause();
       this.#show(Number(this.scrub.value));
     });
+  }
+
+  get playing() {
+    return this.#raf !== 0;
+  }
+
+  /// The frame URLs shown now (A/B keeps them when this tuning is pinned).
+  get frames() {
+    return this.#frames;
+  }
+
+  /// Seconds of scene time between frames (for tests and tools).
+  get frameSeconds() {
+    return this.#dt;
   }
 
   /// Render progress reported by the server ({done, total} frames), or an indeterminate bar (null).
@@ -35,19 +56,31 @@ export class PreviewPlayer {
     this.progress.hidden = false;
   }
 
-  /// A finished preview: frame URLs and the filmstrip URL. Frames are fetched up front so playback is
-  /// smooth; the bar counts them in, and the first frame shows as soon as it is there.
-  load(urls, filmstripUrl) {
+  /// Frames stream: the first frame of a preview still rendering, shown as soon as the server has it
+  /// (progress.ready >= 1), before the rest are done.
+  first(url) {
+    this.#stop();
+    this.img.src = url;
+    this.img.dataset.frame = '0';
+    this.out.textContent = 'first frame; the others are rendering';
+  }
+
+  /// A finished preview: frame URLs, the filmstrip URL and the seconds between frames. Every frame is
+  /// fetched up front so playback is smooth; the first shows as soon as it is there, and playback starts
+  /// once all are in (a frame that is not in yet would stall the clock).
+  load(urls, filmstripUrl, frameSeconds) {
     const generation = ++this.#generation;
-    this.pause();
+    this.#stop();
     this.#frames = urls;
     this.#images = urls.map(() => null);
+    this.#dt = frameSeconds > 0 ? frameSeconds : 1 / 30;
     this.scrub.max = String(Math.max(0, urls.length - 1));
     this.scrub.disabled = urls.length < 2;
     this.play.disabled = urls.length < 2;
     this.progress.max = urls.length;
     this.progress.value = 0;
     this.progress.hidden = false;
+    this.img.dataset.frameSeconds = String(this.#dt);
     let loaded = 0;
     urls.forEach((url, i) => {
       const image = new Image();
@@ -56,7 +89,10 @@ export class PreviewPlayer {
         this.#images[i] = image;
         this.progress.value = ++loaded;
         if (i === this.#index) this.#show(i);
-        if (loaded === urls.length) this.progress.hidden = true;
+        if (loaded === urls.length) {
+          this.progress.hidden = true;
+          if (!this.#userPaused) this.start();
+        }
       };
       image.src = url;
     });
@@ -72,7 +108,7 @@ export class PreviewPlayer {
 
   clear() {
     ++this.#generation;
-    this.pause();
+    this.#stop();
     this.#frames = [];
     this.img.removeAttribute('src');
     this.filmstrip.hidden = true;
@@ -92,15 +128,27 @@ export class PreviewPlayer {
   }
 
   start() {
-    if (this.#frames.length < 2 || this.#timer) return;
+    if (this.#frames.length < 2 || this.#raf) return;
     this.play.textContent = 'Pause';
     this.play.setAttribute('aria-pressed', 'true');
-    this.#timer = setInterval(() => this.#show((this.#index + 1) % this.#frames.length), 1000 / PLAYBACK_FPS);
+    this.#startedAt = performance.now() - this.#index * this.#dt * 1000;
+    const tick = (now) => {
+      // The frame of this moment in scene time, looping: real time whatever the display's refresh rate.
+      // (rAF's timestamp may precede the start by a fraction of a frame: never a negative index.)
+      const n = Math.max(0, Math.floor((now - this.#startedAt) / (this.#dt * 1000))) % this.#frames.length;
+      if (n !== this.#index) this.#show(n);
+      this.#raf = requestAnimationFrame(tick);
+    };
+    this.#raf = requestAnimationFrame(tick);
   }
 
   pause() {
-    clearInterval(this.#timer);
-    this.#timer = 0;
+    this.#stop();
+  }
+
+  #stop() {
+    cancelAnimationFrame(this.#raf);
+    this.#raf = 0;
     this.play.textContent = 'Play';
     this.play.setAttribute('aria-pressed', 'false');
   }

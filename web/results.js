@@ -1,5 +1,6 @@
 // The numbers of a tune response: the constants, requested against achieved, the warnings, a verdict
 // per integrator with a suggested fix, and the clipboard (web/engine_table.js draws the engines).
+import { formatDifference } from './engines.js';
 import { METHODS, METHOD_LABELS } from './oscillator.js';
 
 /// Six significant digits, exponent form for very large or small magnitudes; null (undefined in the
@@ -53,7 +54,11 @@ export function showNumbers(root, tune) {
   setValue(root, 'requested-damping', req.damping_ratio);
   setValue(root, 'achieved-damping', got.damping_ratio);
   setPercent(root.querySelector('[data-testid="frequency-error"]'), percentError(req.frequency_hz, got.frequency_hz));
-  setPercent(root.querySelector('[data-testid="damping-error"]'), percentError(req.damping_ratio, got.damping_ratio));
+  // The damping error is the difference of ratios (zeta may be asked 0), as in every table of the page.
+  const dz = typeof req.damping_ratio === 'number' && typeof got.damping_ratio === 'number' ? got.damping_ratio - req.damping_ratio : null;
+  const dampingError = root.querySelector('[data-testid="damping-error"]');
+  dampingError.textContent = formatDifference(dz);
+  dampingError.className = dz === null ? '' : Math.abs(dz) < 0.02 ? 'err-small' : Math.abs(dz) > 0.1 ? 'err-big' : '';
   const list = root.querySelector('#warnings');
   list.replaceChildren(...(tune.warnings ?? []).filter((w) => !w.engine).map((w) => {
     const li = document.createElement('li');
@@ -99,8 +104,10 @@ export function showStability(root, tune, fps, substeps) {
     const tr = document.createElement('tr');
     tr.dataset.method = m;
     const labels = ['', 'verdict', 'steps per period', 'frequency (Hz)', 'damping', 'what to do'];
-    const cells = [METHOD_LABELS[m], s.verdict, fmt(s.steps_per_period), fmt(s.achieved_frequency_hz),
-      fmt(s.achieved_damping_ratio), suggestion(m, s, tune, fps, substeps)];
+    // An unstable method has no frequency to speak of: its motion grows without bound.
+    const blows = s.stable === false;
+    const cells = [METHOD_LABELS[m], s.verdict, blows ? '—' : fmt(s.steps_per_period), blows ? 'blows up' : fmt(s.achieved_frequency_hz),
+      blows ? 'blows up' : fmt(s.achieved_damping_ratio), suggestion(m, s, tune, fps, substeps)];
     for (const [i, text] of cells.entries()) {
       const td = document.createElement(i === 0 ? 'th' : 'td');
       if (i === 0) td.scope = 'row';
@@ -134,3 +141,23 @@ export async function copyText(text) {
   }
 }
 
+
+/// The summary bar beside the sliders: requested against achieved frequency and damping ratio, k, c, and
+/// the chosen soft method's verdict at this step; `what` names the joint the numbers describe.
+export function showSummary(root, tune, what) {
+  const req = tune.requested ?? {}, got = tune.achieved ?? {};
+  const put = (testid, text, title) => {
+    const el = root.querySelector(`[data-testid="${testid}"]`);
+    el.textContent = text;
+    if (title) el.title = title;
+  };
+  put('summary-frequency', `${fmt(req.frequency_hz)} → ${fmt(got.frequency_hz)} Hz`, 'requested → achieved at this step');
+  put('summary-damping', `${fmt(req.damping_ratio)} → ${fmt(got.damping_ratio)}`, 'requested → achieved damping ratio');
+  put('summary-k', fmt(tune.k), tune.mode === 'exact' ? "k' (exact mode)" : 'stiffness');
+  put('summary-c', fmt(tune.c), tune.mode === 'exact' ? "c' (exact mode)" : 'damping');
+  const method = tune.mode === 'exact' ? 'soft_exact' : 'soft';
+  const verdict = tune.stability?.[method]?.verdict ?? '';
+  const el = root.querySelector('[data-testid="summary-verdict"]');
+  el.textContent = `${verdict}${what ? ` · ${what}` : ''}`;
+  el.className = verdict ? `verdict-${verdict}` : '';
+}

@@ -2,9 +2,6 @@
 // query, so a link restores a tuning exactly. Only values that differ from the page's defaults are
 // written, which keeps shared links short. This module also turns the state into API requests.
 
-/// The designer's oscillation words and the damping ratio each stands for (SPEC.md 1).
-export const OSCILLATION_ZETA = { free: 0, some: 0.5, none: 1 };
-
 /// {name: value} of every named control; radios give the checked value ('' when none), checkboxes '1'/''.
 export function readForm(form) {
   const state = {};
@@ -42,12 +39,13 @@ export function toQuery(state, defaults) {
   return q.toString();
 }
 
-/// The state a query string describes, on top of `defaults`; unknown keys are ignored.
-export function fromQuery(search, defaults) {
+/// The state a query string describes, on top of `defaults`; unknown keys are ignored. `words` is the
+/// damping ratio of each oscillation word as the server documents it (api.js oscillationWords()).
+export function fromQuery(search, defaults, words = {}) {
   const state = { ...defaults };
   for (const [k, v] of new URLSearchParams(search)) if (k in defaults) state[k] = v;
   // A link carries either an oscillation word or a fine damping ratio; the word wins and sets the slider.
-  if (state.osc in OSCILLATION_ZETA) state.zeta = String(OSCILLATION_ZETA[state.osc]);
+  if (state.osc in words) state.zeta = String(words[state.osc]);
   return state;
 }
 
@@ -76,10 +74,13 @@ export function tuningFields(state) {
   return t;
 }
 
-/// POST /api/v1/tune body.
-export function tuneRequest(state) {
+/// POST /api/v1/tune body. `jointMass` (kg, or kg m^2): the effective mass of the preset joint the numbers
+/// describe, which its scene's bodies give (the page's own body controls then do not apply).
+export function tuneRequest(state, jointMass) {
   const q = { fps: num(state.fps), substeps: num(state.substeps), ...tuningFields(state) };
-  if (state.body === 'constraint') {
+  if (jointMass !== undefined) {
+    q.effective_mass = jointMass;
+  } else if (state.body === 'constraint') {
     q.constraint = {
       dimension: 2, type: state.ctype, body_a: body(state, 'a'), body_b: body(state, 'b'),
       anchor_a: [num(state.anchor_a_x), num(state.anchor_a_y)],
@@ -94,24 +95,21 @@ export function tuneRequest(state) {
 
 const TUNING_KEYS = ['response_frames', 'basis_fps', 'frequency_hz', 'oscillation', 'damping_ratio'];
 
-/// A preset scene with the page's step and tuning applied: world fps and substeps, and the designer
-/// fields of every soft joint and oscillator tuned in designer units. An item that names its own `mode`
-/// keeps it (a preset may put standard and exact side by side); the others take the page's mode.
-export function tunedScene(scene, state) {
-  const s = structuredClone(scene);
-  s.world = { ...s.world, fps: num(state.fps), substeps: num(state.substeps) };
-  const { mode, ...tuning } = tuningFields(state);
-  for (const item of [...(s.joints ?? []), ...(s.oscillators ?? [])]) {
-    if (!TUNING_KEYS.some((k) => k in item)) continue;
-    for (const k of TUNING_KEYS) delete item[k];
-    Object.assign(item, tuning);
-    item.mode ??= mode;
-  }
-  return JSON.parse(JSON.stringify(s));
+/// The page's tuning of a preset's own joints: `tuning` of POST /api/v1/simulate and /preview (docs/api.md):
+/// the world's step and the designer fields; the server gives it to every designer-tuned joint and
+/// oscillator of the scene (server/app/scene_tuning.h).
+export function sceneTuning(state) {
+  return JSON.parse(JSON.stringify({ fps: num(state.fps), substeps: num(state.substeps), ...tuningFields(state) }));
 }
 
-/// Controls a preset scene sets: the step and the tuning of its first designer-tuned joint or oscillator.
-export function stateFromScene(scene) {
+/// The preset as the page tunes it: a request `softtune simulate --request` and POST /api/v1/simulate take.
+export function presetRequest(state) {
+  return { preset: state.preset, tuning: sceneTuning(state) };
+}
+
+/// Controls a preset scene sets: the step and the tuning of its first designer-tuned joint or oscillator
+/// (`words` as in fromQuery).
+export function stateFromScene(scene, words = {}) {
   const out = {};
   if (scene.world?.fps !== undefined) out.fps = String(scene.world.fps);
   out.substeps = String(scene.world?.substeps ?? 1);
@@ -123,7 +121,7 @@ export function stateFromScene(scene) {
   else if (tuned.frequency_hz > 0) out.frames = String(Math.round(basis / tuned.frequency_hz));
   if (tuned.oscillation) {
     out.osc = tuned.oscillation;
-    out.zeta = String(OSCILLATION_ZETA[tuned.oscillation]);
+    if (tuned.oscillation in words) out.zeta = String(words[tuned.oscillation]);
   } else if (tuned.damping_ratio !== undefined) {
     out.osc = '';
     out.zeta = String(tuned.damping_ratio);
@@ -134,4 +132,31 @@ export function stateFromScene(scene) {
     out.mass = String(tuned.effective_mass);
   }
   return out;
+}
+
+/// The size the page asks previews in, and the cap on frames (render/include/softtune/render/frame_pipeline.h).
+export const PREVIEW_SIZE = '480x270';
+export const MAX_PREVIEW_FRAMES = 600;
+/// Frames a browser shows per second at most: a scene is sampled at up to this rate for real-time playback.
+export const PREVIEW_RATE = 30;
+
+/// Frames of a preview covering `duration_s` at up to `rate` frames per second (both ends included).
+export function previewFrames(durationS, rate) {
+  return Math.max(2, Math.min(MAX_PREVIEW_FRAMES, Math.round(durationS * rate) + 1));
+}
+
+/// POST /api/v1/preview body. A Box2D preset: by name with the page's `tuning`, frames over its whole
+/// duration at up to PREVIEW_RATE per second. The oscillator (a custom body, or the oscillator preset): the
+/// tune fields with the effective mass the tune answer computed, one frame per game frame over at least
+/// 1 s and three periods (`exact_motion.duration_s`). `wait: false` answers at once, so the progress bar
+/// can follow the render.
+export function previewRequest(state, tune, scene) {
+  const settings = { size: PREVIEW_SIZE, wait: false };
+  if (state.preset && state.preset !== 'oscillator') {
+    const duration = scene?.world?.duration_s ?? 2;
+    return { ...presetRequest(state), frames: previewFrames(duration, Math.min(PREVIEW_RATE, num(state.fps) || PREVIEW_RATE)), ...settings };
+  }
+  const { constraint, ...fields } = tuneRequest(state);
+  const duration = Math.max(1, tune.exact_motion?.duration_s ?? 1);
+  return { ...fields, effective_mass: tune.effective_mass, frames: previewFrames(duration, num(state.fps)), ...settings };
 }

@@ -31,4 +31,22 @@ State analytic_state(State initial, double omega, double zeta, double t) {
   return {a * e1 + b * e2, a * r1 * e1 + b * r2 * e2};
 }
 
+Eigen::Matrix2d analytic_step_matrix(double omega, double zeta, double h) {
+  const State from_x = analytic_state({1.0, 0.0}, omega, zeta, h);
+  const State from_v = analytic_state({0.0, 1.0}, omega, zeta, h);
+  Eigen::Matrix2d e;
+  e << from_x.x, from_v.x, from_x.v, from_v.v;
+  return e;
+}
+
+ExactMotion exact_motion(double omega, double zeta, double frequency_hz, double h) {
+  ExactMotion m;
+  m.duration_s = frequency_hz > 0.0 ? 3.0 / frequency_hz : 1.0;
+  m.step_matrix = analytic_step_matrix(omega, zeta, h);
+  m.smooth_dt_s = m.duration_s / kExactMotionPoints;
+  m.smooth_x.reserve(kExactMotionPoints + 1);
+  for (int i = 0; i <= kExactMotionPoints; ++i) m.smooth_x.push_back(analytic_state({1.0, 0.0}, omega, zeta, i * m.smooth_dt_s).x);
+  return m;
+}
+
 }  // namespace softtune

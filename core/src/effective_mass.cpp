@@ -1,4 +1,5 @@
 #include "softtune/effective_mass.h"
+#include "softtune/effective_mass_terms.h"
 
 namespace softtune {
 namespace {
@@ -20,13 +21,26 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() 
 
 }  // namespace
 
-double inverse_effective_mass(const Constraint2D& c) {
+InverseMassTerms inverse_effective_mass_terms(const Constraint2D& c) {
   const double ia = inverse_inertia(c.body_a), ib = inverse_inertia(c.body_b);
-  if (c.type == ConstraintType::angular) return ia + ib;
+  InverseMassTerms t;
+  if (c.type == ConstraintType::angular) {
+    t.a_rotational = ia;
+    t.b_rotational = ib;
+    return t;
+  }
   const double rna = cross(c.anchor_a - c.body_a.position, c.axis);
   const double rnb = cross(c.anchor_b - c.body_b.position, c.axis);
-  return inverse_mass(c.body_a.is_static, c.body_a.mass) + inverse_mass(c.body_b.is_static, c.body_b.mass) +
-         ia * rna * rna + ib * rnb * rnb;
+  t.a_translational = inverse_mass(c.body_a.is_static, c.body_a.mass);
+  t.b_translational = inverse_mass(c.body_b.is_static, c.body_b.mass);
+  t.a_rotational = ia * rna * rna;
+  t.b_rotational = ib * rnb * rnb;
+  return t;
+}
+
+double inverse_effective_mass(const Constraint2D& c) {
+  const InverseMassTerms t = inverse_effective_mass_terms(c);
+  return t.a_translational + t.b_translational + t.a_rotational + t.b_rotational;
 }
 
 double inverse_effective_mass(const Constraint3D& c) {

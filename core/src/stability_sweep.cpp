@@ -82,8 +82,25 @@ SweepCase make_case(SweepFamily family, double ratio, double zeta, double mass, 
 
 }  // namespace
 
+StepLimit find_step_limit(Method m, double zeta) {
+  static const std::vector<double> scan = log_scan(kStepLimitLowest, kStepLimitHighest, kStepLimitScanPoints);
+  const SpectralRadiusOf rho = [&](double omega_h) {
+    std::complex<double> z1, z2;
+    eigenvalues_2x2(step_matrix(m, make_step_model(1.0, omega_h, zeta, 1.0)), z1, z2);
+    return std::max(std::abs(z1), std::abs(z2));
+  };
+  StepLimit out{m, zeta, find_stability_limit(rho, scan), std::nullopt};
+  if (const auto h = max_stable_step(m, 1.0, zeta)) out.closed_form_omega_h = *h;
+  return out;
+}
+
 SweepResult run_sweep(const SweepSettings& s) {
   SweepResult out;
+  for (Method m : s.methods) {
+    for (double zeta : s.damping_ratios) {
+      if (s.step_limits) out.step_limits.push_back(find_step_limit(m, zeta));
+    }
+  }
   const int n = std::max(1000, s.observe_steps);
   auto add = [&](SweepCase c) {
     for (Method m : s.methods) {

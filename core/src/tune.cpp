@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "softtune/exact_softness.h"
+#include "softtune/tune_chain.h"
 
 namespace softtune {
 
@@ -179,6 +180,10 @@ TuneResult tune(const TuneRequest& r) {
   choose_spring(r, model, out);
   analyze_methods(r, model, out);
   export_to_engines(r, out);
+  if (r.chain) {
+    out.stages.add(Stage::sequential_impulse_chain);
+    out.chain = design_chain(chain_design_request(r, out));
+  }
   return out;
 }
 

@@ -27,6 +27,8 @@ struct JobState {
   std::optional<Filmstrip> filmstrip;
   double prepare_ms = 0.0;
   std::vector<std::string> pngs;  // each worker writes only its own frames' entries
+  // ready[i] is set (release) once pngs[i] is written, so frame_png() can serve it before the job ends.
+  std::unique_ptr<std::atomic<bool>[]> ready;
 
   std::atomic<int> done{0};
   std::atomic<bool> failed{false};
@@ -90,7 +92,24 @@ PreviewProgress PreviewJob::progress() const {
   p.finished = state_->finished;
   p.failed = state_->finished && !state_->result;
   if (p.finished && state_->result) p.done = p.total;
+  if (p.finished) {
+    p.ready = state_->result ? p.total : 0;
+  } else if (state_->ready) {
+    while (p.ready < p.total && state_->ready[p.ready].load(std::memory_order_acquire)) ++p.ready;
+  }
   return p;
+}
+
+std::optional<std::string> PreviewJob::frame_png(int n) const {
+  if (n < 0 || n >= state_->settings.frames) return std::nullopt;
+  // Under the job's mutex: finish() moves the frames into the result under it too.
+  std::lock_guard lock(state_->mutex);
+  if (state_->finished) {
+    if (!state_->result) return std::nullopt;
+    return state_->result->frames_png[n];
+  }
+  if (!state_->ready || !state_->ready[n].load(std::memory_order_acquire)) return std::nullopt;
+  return state_->pngs[n];
 }
 
 std::shared_ptr<const Preview> PreviewJob::wait() const {
@@ -192,6 +211,7 @@ std::shared_ptr<PreviewJob> FramePipeline::submit(std::string_view canonical_req
   job->frames.camera = run_camera(job->frames, settings.size);
   job->filmstrip.emplace(filmstrip_layout(settings.frames, settings.filmstrip_every, settings.size));
   job->pngs.resize(settings.frames);
+  job->ready = std::make_unique<std::atomic<bool>[]>(settings.frames);
   {
     std::lock_guard lock(queue_mutex_);
     for (int i = 0; i < settings.frames; ++i) queue_.push_back({job, i});
@@ -240,6 +260,7 @@ void FramePipeline::run_task(const Task& task, std::unique_ptr<Renderer>& render
       job.filmstrip->place(task.index, pixels, size);
       const auto t1 = Clock::now();
       job.pngs[task.index] = encode_png(pixels, size, options_.png);
+      job.ready[task.index].store(true, std::memory_order_release);
       const auto t2 = Clock::now();
       job.render_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count());
       job.png_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(t2 - t1).count());
@@ -265,7 +286,10 @@ void FramePipeline::finish(JobState& job) {
       preview->id = job.id;
       preview->settings = job.settings;
       preview->filmstrip = job.filmstrip->layout();
-      preview->frames_png = std::move(job.pngs);
+      {
+        std::lock_guard lock(job.mutex);  // frame_png() may be reading a frame of this job
+        preview->frames_png = std::move(job.pngs);
+      }
       const auto t0 = Clock::now();
       preview->filmstrip_png = job.filmstrip->encode(options_.png);
       preview->stages.add(Stage::render);

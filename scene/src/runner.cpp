@@ -257,6 +257,7 @@ ProbeResult measure_probe(const ProbeSettings& probe, std::vector<double> value,
     for (double v : window) r.max_abs_value = std::max(r.max_abs_value, std::abs(v));
     r.measured = fit_response(window, 1.0 / fps);
     r.settle_frames = r.measured.settle_samples;
+    if (r.settle_frames) r.settle_s = *r.settle_frames / fps;
   }
   r.value = std::move(value);
   return r;

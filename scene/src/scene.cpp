@@ -1,5 +1,6 @@
 #include "softtune/scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -194,6 +195,22 @@ std::optional<FieldError> check_probe(const Scene& s, const ProbeSettings& p, co
   return std::nullopt;
 }
 
+// rates.fps / rates.substeps and an expectation's fps / substeps: the world's own ranges, at most kMaxRates each.
+std::optional<FieldError> check_rate_lists(const std::vector<double>& fps, const std::vector<int>& substeps, const std::string& path) {
+  const std::string count = "must hold at most " + std::to_string(limits::kMaxRates) + " entries";
+  if (fps.size() > limits::kMaxRates) return FieldError{path + ".fps", count};
+  if (substeps.size() > limits::kMaxRates) return FieldError{path + ".substeps", count};
+  for (std::size_t i = 0; i < fps.size(); ++i) {
+    if (!in(fps[i], softtune::limits::kMinFps, limits::kMaxSceneFps))
+      return FieldError{path + ".fps." + std::to_string(i), range(softtune::limits::kMinFps, limits::kMaxSceneFps, "Hz")};
+  }
+  for (std::size_t i = 0; i < substeps.size(); ++i) {
+    if (substeps[i] < 1 || substeps[i] > limits::kMaxSceneSubsteps)
+      return FieldError{path + ".substeps." + std::to_string(i), "must be an integer in [1, " + std::to_string(limits::kMaxSceneSubsteps) + "]"};
+  }
+  return std::nullopt;
+}
+
 bool scene_wide(Metric m) {
   return m == Metric::max_constraint_error || m == Metric::finite || m == Metric::in_world;
 }
@@ -211,6 +228,7 @@ std::optional<FieldError> check_expectation(const Scene& s, const Expectation& e
   if ((e.min && !std::isfinite(*e.min)) || (e.max && !std::isfinite(*e.max)))
     return FieldError{path + (e.min && !std::isfinite(*e.min) ? ".min" : ".max"), "must be a finite number"};
   if (e.min && e.max && *e.min > *e.max) return FieldError{path + ".min", "must not exceed max"};
+  if (auto r = check_rate_lists(e.at_fps, e.at_substeps, path)) return r;
   return std::nullopt;
 }
 
@@ -227,10 +245,16 @@ std::optional<FieldError> check_unique_ids(const std::vector<T>& items, const ch
 
 }  // namespace
 
+bool applies_at(const Expectation& e, const WorldSettings& w) {
+  const bool fps = e.at_fps.empty() || std::find(e.at_fps.begin(), e.at_fps.end(), w.fps) != e.at_fps.end();
+  return fps && (e.at_substeps.empty() || std::find(e.at_substeps.begin(), e.at_substeps.end(), w.substeps) != e.at_substeps.end());
+}
+
 int frame_count(const WorldSettings& w) { return static_cast<int>(std::lround(w.duration_s * w.fps)); }
 
 std::optional<FieldError> validate_scene(const Scene& s) {
   if (auto e = check_world(s.world)) return e;
+  if (auto e = check_rate_lists(s.rates.fps, s.rates.substeps, "rates")) return e;
   if (!finite_vector(s.camera.center, limits::kMaxWorldCoordinate)) return FieldError{"camera.center", "must be finite, within the world coordinate range"};
   if (!in(s.camera.width_m, limits::kMinSize, limits::kMaxWorldCoordinate)) return FieldError{"camera.width_m", range(limits::kMinSize, limits::kMaxWorldCoordinate, "m")};
   if (s.bodies.size() > limits::kMaxBodies) return FieldError{"bodies", "must hold at most " + std::to_string(limits::kMaxBodies) + " bodies"};
@@ -298,6 +322,7 @@ std::string_view metric_name(Metric m) {
     case Metric::overshoot: return "overshoot";
     case Metric::settle_frames: return "settle_frames";
     case Metric::max_abs_value: return "max_abs_value";
+    case Metric::settle_s: return "settle_s";
     case Metric::max_constraint_error: return "max_constraint_error";
     case Metric::finite: return "finite";
     case Metric::in_world: return "in_world";

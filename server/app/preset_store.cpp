@@ -71,13 +71,17 @@ nlohmann::json load_preset(const std::string& dir, const std::string& name) {
   const fs::path path = fs::path(dir) / (name + ".json");
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw Problem(404, "Unknown preset", "preset", "no preset \"" + name + "\" in " + dir);
+  return load_preset_file(path.string(), dir);
+}
+
+nlohmann::json load_preset_file(const std::string& path, const std::string& schema_dir) {
   nlohmann::json preset;
   try {
     preset = parse_json(read_text(path, "preset"));
   } catch (const Problem& p) {
-    throw Problem(p.status, p.title, p.field, path.string() + ": " + p.detail);
+    throw Problem(p.status, p.title, p.field, path + ": " + p.detail);
   }
-  validate_preset(preset, load_schema(dir), path.string());
+  validate_preset(preset, load_schema(schema_dir), path);
   return preset;
 }
 

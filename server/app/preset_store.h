@@ -28,6 +28,10 @@ nlohmann::json load_schema(const std::string& dir);
 /// strictly, then validate_preset against the directory's schema.
 nlohmann::json load_preset(const std::string& dir, const std::string& name);
 
+/// Loads the preset in file `path` (any name), validated against `schema_dir`/schema.json: a studio's preset
+/// kept outside a presets directory (`softtune check FILE`).
+nlohmann::json load_preset_file(const std::string& path, const std::string& schema_dir);
+
 /// Refuses (Problem 422, "Invalid preset") a preset that breaks `schema`: the detail names `file`, the JSON
 /// pointer and the rule; `field` carries the JSON pointer.
 void validate_preset(const nlohmann::json& preset, const nlohmann::json& schema, const std::string& file);

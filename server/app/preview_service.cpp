@@ -1,5 +1,6 @@
 #include "app/preview_service.h"
 
+#include "app/scene_tuning.h"
 #include "app/simulate_app.h"
 
 #include <algorithm>
@@ -44,6 +45,7 @@ void plan_oscillator(PreviewPlan& plan, const TuneRequest& request, double initi
   render::OscillatorScene scene = render::oscillator_scene(request, tune(request));
   scene.initial_displacement_m = initial_displacement;
   plan.canonical = "oscillator:" + canonical_oscillator_request(scene);
+  plan.frame_dt_s = 1.0 / scene.fps;  // one frame per game frame (oscillator_frames.h)
   const int frames = plan.settings.frames;
   auto stages = plan.prepare_stages;
   plan.make_frames = [scene, frames, stages] {
@@ -66,6 +68,7 @@ void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::M
   options.record_frames = true;
   options.frame_stride = plan.settings.frames > 1 ? std::max(1, total / (plan.settings.frames - 1)) : 1;
   options.mass_model = mass_model;
+  plan.frame_dt_s = options.frame_stride / scene.world.fps;
   plan.canonical = "scene:" + scene_doc.dump() + "|mass_model:" +
                    (mass_model ? std::string(scene::mass_model_name(*mass_model)) : "scene") +
                    "|stride:" + std::to_string(options.frame_stride);
@@ -104,7 +107,9 @@ PreviewPlan plan_preview(const json& request, const std::string& presets_dir) {
   if (oscillator_preset) {
     r.raw("preset");
     double x0 = 0.5;
-    const json tuning = oscillator_preset_tuning(load_preset(presets_dir, "oscillator"), x0);
+    json preset = load_preset(presets_dir, "oscillator");
+    if (const json* t = r.raw("tuning")) apply_scene_tuning(preset, *t);
+    const json tuning = oscillator_preset_tuning(preset, x0);
     plan_oscillator(plan, decode_tune_request(tuning), x0);
   } else if (r.has("preset") || r.has("scene")) {
     plan_scene(plan, requested_scene_document(r, request, presets_dir, {}), mass_model);
@@ -126,12 +131,12 @@ json PreviewService::answer(const render::PreviewJob& job, const std::string& ur
   const render::PreviewProgress p = job.progress();
   if (!p.finished) {
     return {{"id", job.id()}, {"status", p.failed ? "failed" : "rendering"},
-            {"progress", {{"done", p.done}, {"total", p.total}}}, {"progress_url", base}};
+            {"progress", {{"done", p.done}, {"total", p.total}, {"ready", p.ready}}}, {"progress_url", base}};
   }
   json out = encode_preview(*job.wait(), job.from_cache(), [&base](int n) { return base + "/" + std::to_string(n) + ".png"; },
                             base + "/filmstrip.png");
   out["status"] = "done";
-  out["progress"] = {{"done", p.done}, {"total", p.total}};
+  out["progress"] = {{"done", p.done}, {"total", p.total}, {"ready", p.ready}};
   out["progress_url"] = base;
   return out;
 }
@@ -174,6 +179,7 @@ json PreviewService::start(const json& request, const std::string& presets_dir, 
     all.append(job->wait()->stages);
     out["stages"] = stages_json(all);
   }
+  out["frame_dt_s"] = plan.frame_dt_s;
   out["warnings"] = plan.warnings;
   return out;
 }
@@ -185,9 +191,13 @@ std::optional<json> PreviewService::status(const std::string& id, const std::str
 }
 
 std::optional<std::string> PreviewService::frame_png(const std::string& id, int n) {
-  const auto preview = pipeline_.cached(id);
-  if (!preview || n < 0 || n >= static_cast<int>(preview->frames_png.size())) return std::nullopt;
-  return preview->frames_png[n];
+  if (const auto preview = pipeline_.cached(id)) {
+    if (n < 0 || n >= static_cast<int>(preview->frames_png.size())) return std::nullopt;
+    return preview->frames_png[n];
+  }
+  // Frames stream: one already encoded is served while the others still render.
+  const auto job = pipeline_.find(id);
+  return job ? job->frame_png(n) : std::nullopt;
 }
 
 std::optional<std::string> PreviewService::filmstrip_png(const std::string& id) {

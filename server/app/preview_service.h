@@ -23,6 +23,7 @@ struct PreviewPlan {
   render::PreviewSettings settings;
   std::function<render::FrameSet()> make_frames;
   bool wait = true;               ///< answer when done (true) or at once with a progress URL (false)
+  double frame_dt_s = 0.0;        ///< s of scene time between frames, so a client plays them in real time
   nlohmann::json warnings = nlohmann::json::array();
   std::shared_ptr<StageList> prepare_stages = std::make_shared<StageList>();  ///< filled by make_frames
 };

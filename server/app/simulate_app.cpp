@@ -1,5 +1,7 @@
 #include "app/simulate_app.h"
 
+#include "app/check_app.h"
+#include "app/scene_tuning.h"
 #include "app/preset_store.h"
 #include "codec/json_writer.h"
 #include "codec/problem.h"
@@ -17,11 +19,16 @@ json requested_scene_document(ObjectReader& r, const json& request, const std::s
                               std::initializer_list<const char*> run_options) {
   if (r.has("preset") || r.has("scene")) {
     if (r.has("preset") && r.has("scene")) throw invalid_field("scene", "give either preset or scene, not both");
-    if (auto name = r.string("preset")) return load_preset(presets_dir, *name);
-    json scene_doc = *r.raw("scene");
-    // The schema would name the scene's root "" (its own JSON pointer); the request's field is "scene".
-    if (!scene_doc.is_object()) throw invalid_field("scene", "must be a JSON object (a scene, as in presets/*.json)");
-    validate_preset(scene_doc, load_schema(presets_dir), "scene");
+    json scene_doc;
+    if (auto name = r.string("preset")) {
+      scene_doc = load_preset(presets_dir, *name);
+    } else {
+      scene_doc = *r.raw("scene");
+      // The schema would name the scene's root "" (its own JSON pointer); the request's field is "scene".
+      if (!scene_doc.is_object()) throw invalid_field("scene", "must be a JSON object (a scene, as in presets/*.json)");
+      validate_preset(scene_doc, load_schema(presets_dir), "scene");
+    }
+    if (const json* tuning = r.raw("tuning")) apply_scene_tuning(scene_doc, *tuning);
     return scene_doc;
   }
   // A bare scene: every key belongs to it, except the run options.
@@ -73,19 +80,8 @@ json check_preset(const json& preset) {
   for (const SceneResult& run : check.runs) {
     if (run.error) throw_field_error(*run.error);
   }
-  json expectations = json::array();
-  for (const ExpectationResult& e : check.results) {
-    expectations.push_back({{"probe", e.expectation.probe},
-                            {"metric", metric_name(e.expectation.metric)},
-                            {"mass_model", mass_model_name(e.mass_model)},
-                            {"value", number_or_null(e.value)},
-                            {"min", number_or_null(e.expectation.min)},
-                            {"max", number_or_null(e.expectation.max)},
-                            {"passed", e.passed},
-                            {"note", e.expectation.note}});
-  }
   return {{"name", scene.name}, {"passed", check.passed}, {"stages", stages_json(check.runs.front().stages)},
-          {"expectations", std::move(expectations)}};
+          {"expectations", expectations_json(check)}};
 }
 
 }  // namespace softtune::app

@@ -11,13 +11,15 @@
 
 namespace softtune::app {
 
-/// A simulate request: {"preset": NAME} or {"scene": {...}} or a bare scene, plus the options
+/// A simulate request: {"preset": NAME} or {"scene": {...}} (either with an optional "tuning") or a bare
+/// scene, plus the options
 /// "mass_model" ("effective" | "box2d_reduced"), "frames" (bool) and "frame_stride" (1..1000).
 /// Presets come from `presets_dir`; a full scene is validated against `presets_dir`/schema.json too.
 nlohmann::json run_simulate(const nlohmann::json& request, const std::string& presets_dir);
 
 /// The scene document a request names: {"preset": NAME}, {"scene": {...}}, or the request itself as a bare
-/// scene without its `run_options` keys; validated against presets/schema.json. Marks what it read in `r`.
+/// scene without its `run_options` keys; validated against presets/schema.json. A preset or scene may come
+/// with {"tuning": {...}} (app/scene_tuning.h), applied to its designer-tuned items. Marks what it read in `r`.
 nlohmann::json requested_scene_document(codec::ObjectReader& r, const nlohmann::json& request, const std::string& presets_dir,
                                         std::initializer_list<const char*> run_options);
 

@@ -61,22 +61,33 @@ std::string stability_svg(const json& encoded) {
   std::vector<plot::Plot> plots;
   for (double zeta : {0.0, 0.1, 1.0, 10.0}) plots.push_back(stability_map_plot(zeta));
   if (encoded.contains("chain")) {
+    // One plot per solver: the bisected highest stable f h against the mass ratio, a series per count and
+    // warm start ("none in range" plots at the scan's top).
     using plot::Scale;
-    plot::Plot p{"Sequential impulses, light link + heavy weight: highest stable f h (scan ends at 2)", plot::make_axis("mass ratio m2 / m1", "", Scale::log),
-                 plot::make_axis("highest stable f h", "", Scale::log), {}, {}};
+    std::vector<std::string> solvers;
     for (const json& l : encoded.at("chain").at("limits")) {
-      const std::string name = std::to_string(l.at("iterations").get<int>()) + " iterations" +
-                               (l.at("warm_start").get<bool>() ? ", warm start" : "");
-      auto it = std::find_if(p.series.begin(), p.series.end(), [&](const plot::Series& s) { return s.name == name; });
-      if (it == p.series.end()) {
-        p.series.push_back({name, "", {}, {}, plot::Style::line_and_markers, l.at("warm_start").get<bool>()});
-        it = p.series.end() - 1;
-      }
-      const json& f = l.at("highest_stable_frequency_ratio");
-      it->x.push_back(l.at("mass_ratio").get<double>());
-      it->y.push_back(f.is_null() ? std::nan("") : f.get<double>());
+      const std::string solver = l.at("solver").get<std::string>();
+      if (std::find(solvers.begin(), solvers.end(), solver) == solvers.end()) solvers.push_back(solver);
     }
-    plots.push_back(std::move(p));
+    for (const std::string& solver : solvers) {
+      const bool substeps = solver == "box2d_v3" || solver == "rapier";
+      plot::Plot p{"Chain in " + solver + ": highest stable f h (bisected; no limit: at the scan top)",
+                   plot::make_axis("mass ratio m2 / m1", "", Scale::log), plot::make_axis("highest stable f h", "", Scale::log), {}, {}};
+      for (const json& l : encoded.at("chain").at("limits")) {
+        if (l.at("solver") != solver) continue;
+        const std::string name = std::to_string(l.at("count").get<int>()) + (substeps ? " substeps" : " iterations") +
+                                 (l.at("warm_start").get<bool>() ? ", warm start" : "");
+        auto it = std::find_if(p.series.begin(), p.series.end(), [&](const plot::Series& s) { return s.name == name; });
+        if (it == p.series.end()) {
+          p.series.push_back({name, "", {}, {}, plot::Style::line_and_markers, l.at("warm_start").get<bool>()});
+          it = p.series.end() - 1;
+        }
+        const json& f = l.at("highest_stable_frequency_ratio");
+        it->x.push_back(l.at("mass_ratio").get<double>());
+        it->y.push_back(f.is_null() ? std::nan("") : f.get<double>());
+      }
+      plots.push_back(std::move(p));
+    }
   }
   return plot::render_svg(plots);
 }

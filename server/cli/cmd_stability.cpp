@@ -15,8 +15,8 @@ constexpr const char* kHelp = R"(softtune stability: predicted (step matrix) aga
   softtune stability --request FILE  a custom sweep (- for stdin): methods, frequency_ratios, stiffnesses,
                                      damping_ratios, masses, steps, max_stiffness, observe_steps,
                                      include_cases, chain
-    --summary           counts and chain limits only (no per-case list)
-    --format F          json (default) | svg (stability maps and the chain's limits)
+    --summary           counts, step limits and chain limits only (no per-case list)
+    --format F          json (default) | svg (stability maps and each solver's chain limits)
 
 Exit code 0 when every observation matches its prediction, 1 otherwise; bad input: 2.
 )";
@@ -40,8 +40,8 @@ int run_stability(const Args& args) {
     if (format == app::Format::svg) {
       std::cout << app::stability_svg(out);
     } else if (flags.has("summary")) {
-      print_json({{"summary", out.at("summary")}, {"chain", out.contains("chain") ? out.at("chain") : nlohmann::json()},
-                  {"stages", out.at("stages")}});
+      print_json({{"summary", out.at("summary")}, {"step_limits", out.at("step_limits")},
+                  {"chain", out.contains("chain") ? out.at("chain") : nlohmann::json()}, {"stages", out.at("stages")}});
     } else {
       print_json(out);
     }

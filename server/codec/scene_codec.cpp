@@ -4,8 +4,11 @@
 
 #include "codec/json_reader.h"
 #include "codec/json_writer.h"
+#include "codec/list_reader.h"
 #include "codec/problem.h"
 #include "codec/tune_codec.h"
+#include "softtune/scene/limits.h"
+#include "softtune/validation.h"
 
 namespace softtune::codec {
 namespace {
@@ -185,17 +188,25 @@ std::optional<MassModel> read_mass_model(ObjectReader& r) {
 
 namespace {
 
+// "fps": [Hz], "substeps": [counts]: a preset's rates and an expectation's, in the world's own ranges.
+void read_rate_lists(ObjectReader& r, std::vector<double>& fps, std::vector<int>& substeps) {
+  if (auto v = read_number_list(r, "fps", scene::limits::kMaxRates, softtune::limits::kMinFps, scene::limits::kMaxSceneFps, "Hz")) fps = *v;
+  if (auto v = read_integer_list(r, "substeps", scene::limits::kMaxRates, 1, scene::limits::kMaxSceneSubsteps)) substeps = *v;
+}
+
 Expectation read_expectation(ObjectReader& r) {
   Expectation e;
   e.probe = r.string("probe").value_or("");
   const auto m = r.choice("metric", {"frequency_error", "damping_ratio_error", "measured_frequency_hz", "measured_damping_ratio",
-                                     "overshoot", "settle_frames", "max_abs_value", "max_constraint_error", "finite", "in_world"});
+                                     "overshoot", "settle_frames", "max_abs_value", "max_constraint_error", "finite", "in_world",
+                                     "settle_s"});
   if (!m) throw invalid_field(r.field("metric"), "is required");
   e.metric = static_cast<Metric>(*m);
   e.min = r.number("min");
   e.max = r.number("max");
   e.mass_model = read_mass_model(r);
   e.note = r.string("note").value_or("");
+  read_rate_lists(r, e.at_fps, e.at_substeps);
   return e;
 }
 
@@ -234,6 +245,7 @@ json probe_json(const Scene& scene, const ProbeResult& p, std::size_t i) {
                     {"damping_ratio", number_or_null(m.damping_ratio)},
                     {"overshoot", number_or_null(m.overshoot)},
                     {"settle_frames", p.settle_frames ? json(*p.settle_frames) : json()},
+                    {"settle_s", number_or_null(p.settle_s)},
                     {"equilibrium", number_or_null(m.equilibrium)},
                     {"fit_residual", number_or_null(m.residual)}}},
       {"error", {{"frequency", number_or_null(p.frequency_error)}, {"damping_ratio", number_or_null(p.damping_ratio_error)}}},
@@ -288,6 +300,10 @@ Scene decode_scene(const json& doc) {
   read_list(r, "oscillators", [&](ObjectReader& o, const std::string& path) { s.oscillators.push_back(read_oscillator(o, path)); });
   read_list(r, "probes", [&](ObjectReader& o, const std::string&) { s.probes.push_back(read_probe(o)); });
   read_list(r, "expectations", [&](ObjectReader& o, const std::string&) { s.expectations.push_back(read_expectation(o)); });
+  if (auto rates = r.object("rates")) {
+    read_rate_lists(*rates, s.rates.fps, s.rates.substeps);
+    rates->finish();
+  }
   r.finish();
   if (auto e = validate_scene(s)) throw_field_error(*e);
   return s;

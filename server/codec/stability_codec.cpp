@@ -5,6 +5,7 @@
 #include "codec/json_writer.h"
 #include "codec/list_reader.h"
 #include "codec/problem.h"
+#include "softtune/chain_solvers.h"
 #include "softtune/validation.h"
 
 namespace softtune::codec {
@@ -16,6 +17,28 @@ namespace {
 const char* verdict_name(Verdict v) {
   return v == Verdict::stable ? "stable" : v == Verdict::marginal ? "marginal" : "unstable";
 }
+
+}  // namespace
+
+std::optional<std::vector<ChainSolver>> read_chain_solvers(const json* v, const std::string& field) {
+  if (!v) return std::nullopt;
+  std::string rule = "must be an array of 1 to 4 solver names:";
+  for (ChainSolver s : kAllChainSolvers) rule += std::string(" ") + std::string(chain_solver_name(s));
+  if (!v->is_array() || v->empty() || v->size() > kAllChainSolvers.size()) throw invalid_field(field, rule);
+  std::vector<ChainSolver> out;
+  for (std::size_t i = 0; i < v->size(); ++i) {
+    const auto s = (*v)[i].is_string() ? chain_solver_from_name((*v)[i].get<std::string>()) : std::nullopt;
+    if (!s) throw invalid_field(field + "[" + std::to_string(i) + "]", rule);
+    out.push_back(*s);
+  }
+  return out;
+}
+
+const char* limit_kind_name(LimitKind k) {
+  return k == LimitKind::found ? "found" : k == LimitKind::none_in_range ? "none_in_range" : "unstable_at_lowest";
+}
+
+namespace {
 
 json warnings_of(std::uint8_t flags) {
   json out = json::array();
@@ -79,6 +102,7 @@ void read_chain(ObjectReader& parent, StabilityRequest& q) {
   if (!v->is_object()) throw invalid_field("chain", "must be true, false or an object");
   ObjectReader r = *parent.object("chain");
   ChainSweepSettings& c = q.chain;
+  if (auto x = read_chain_solvers(r.raw("solvers"), "chain.solvers")) c.solvers = *x;
   if (auto x = read_number_list(r, "mass_ratios", kMaxGridEntries, 1.0, kMaxMassRatio, "")) c.mass_ratios = *x;
   if (auto x = read_integer_list(r, "iterations", kMaxGridEntries, 1, kMaxChainIterations)) c.iterations = *x;
   if (auto x = read_number_list(r, "frequency_ratios", kMaxGridEntries, 1e-6, kMaxFrequencyRatio, "")) c.frequency_ratios = *x;
@@ -94,18 +118,47 @@ void read_chain(ObjectReader& parent, StabilityRequest& q) {
   r.finish();
 }
 
-json chain_limit_json(const ChainLimit& l) {
-  return {{"mass_ratio", number_or_null(l.mass_ratio)},
+json verdict_or_null(const std::optional<Verdict>& v) { return v ? json(verdict_name(*v)) : json(nullptr); }
+
+json chain_limit_json(const ChainLimit& l, double h) {
+  std::optional<double> unstable_hz;
+  if (l.lowest_unstable_frequency_ratio) unstable_hz = *l.lowest_unstable_frequency_ratio / h;
+  return {{"solver", chain_solver_name(l.solver)},
+          {"count_name", chain_count_name(l.solver)},
+          {"count", l.count},
+          {"mass_ratio", number_or_null(l.mass_ratio)},
           {"iterations", l.iterations},
+          {"substeps", l.substeps},
           {"warm_start", l.warm_start},
+          {"limit", limit_kind_name(l.kind)},
           {"highest_stable_frequency_ratio", number_or_null(l.highest_stable_frequency_ratio)},
           {"highest_stable_frequency_hz", number_or_null(l.highest_stable_frequency_hz)},
+          {"lowest_unstable_frequency_ratio", number_or_null(l.lowest_unstable_frequency_ratio)},
+          {"lowest_unstable_frequency_hz", number_or_null(unstable_hz)},
+          {"scan_highest_stable_frequency_ratio", number_or_null(l.scan_highest_stable_frequency_ratio)},
+          {"spectral_radius_stable_side", number_or_null(l.highest_stable_frequency_ratio ? std::optional<double>(l.stable_side_radius) : std::nullopt)},
+          {"spectral_radius_unstable_side", number_or_null(l.lowest_unstable_frequency_ratio ? std::optional<double>(l.unstable_side_radius) : std::nullopt)},
+          {"observed_stable_side", verdict_or_null(l.observed_stable_side)},
+          {"observed_unstable_side", verdict_or_null(l.observed_unstable_side)},
+          {"confirmed", l.confirmed},
           {"stable_over_whole_scan", l.stable_over_whole_scan}};
 }
 
+json step_limit_json(const StepLimit& l) {
+  return {{"method", method_name(l.method)},
+          {"damping_ratio", number_or_null(l.damping_ratio)},
+          {"limit", limit_kind_name(l.omega_h.kind)},
+          {"largest_stable_omega_h", number_or_null(l.omega_h.stable_side)},
+          {"smallest_unstable_omega_h", number_or_null(l.omega_h.unstable_side)},
+          {"closed_form_omega_h", number_or_null(l.closed_form_omega_h)}};
+}
+
 json chain_case_json(const ChainCase& c) {
-  return {{"mass_ratio", number_or_null(c.mass_ratio)},
+  return {{"solver", chain_solver_name(c.solver)},
+          {"count", c.count},
+          {"mass_ratio", number_or_null(c.mass_ratio)},
           {"iterations", c.iterations},
+          {"substeps", c.substeps},
           {"warm_start", c.warm_start},
           {"frequency_ratio", number_or_null(c.frequency_ratio)},
           {"damping_ratio", number_or_null(c.damping_ratio)},
@@ -119,12 +172,14 @@ json chain_case_json(const ChainCase& c) {
 
 json chain_json(const StabilityRequest& q, const ChainSweepResult& chain) {
   json limits = json::array();
-  for (const ChainLimit& l : chain.limits) limits.push_back(chain_limit_json(l));
+  for (const ChainLimit& l : chain.limits) limits.push_back(chain_limit_json(l, q.chain.h));
   json out = {{"damping_ratio", number_or_null(q.chain.damping_ratio)},
               {"h", number_or_null(q.chain.h)},
               {"scanned_frequency_ratios", q.chain.frequency_ratios},
               {"cases", chain.cases.size()},
               {"mismatches", chain.mismatches},
+              {"limit_relative_tolerance", kLimitRelativeTolerance},
+              {"unconfirmed_limits", chain.unconfirmed_limits},
               {"limits", std::move(limits)}};
   if (q.include_cases) {
     json cases = json::array();
@@ -192,9 +247,15 @@ json encode_stability_result(const StabilityRequest& q, const SweepResult& sweep
     for (const SweepCase& c : sweep.cases) cases.push_back(case_json(c));
     out["cases"] = std::move(cases);
   }
+  json step_limits = json::array();
+  for (const StepLimit& l : sweep.step_limits) step_limits.push_back(step_limit_json(l));
+  out["step_limits"] = {{"searched_omega_h", {kStepLimitLowest, kStepLimitHighest}},
+                        {"limit_relative_tolerance", kLimitRelativeTolerance},
+                        {"limits", std::move(step_limits)}};
   if (chain) {
     out["chain"] = chain_json(q, *chain);
-    out["summary"]["passed"] = out["summary"]["passed"].get<bool>() && chain->mismatches == 0;
+    out["summary"]["passed"] =
+        out["summary"]["passed"].get<bool>() && chain->mismatches == 0 && chain->unconfirmed_limits == 0;
   }
   out["stages"] = stages_json(stages);
   return out;

@@ -30,6 +30,12 @@ struct StabilityRequest {
   bool include_cases = true;  ///< false: counts and chain limits only (`--summary`)
 };
 
+/// A list of chain solver names (`field` names it in a Problem); empty when `value` is null.
+std::optional<std::vector<ChainSolver>> read_chain_solvers(const nlohmann::json* value, const std::string& field);
+
+/// "found", "none_in_range" (no limit inside the searched range), "unstable_at_lowest".
+const char* limit_kind_name(LimitKind kind);
+
 /// An empty object (or null) is the default sweep. Throws Problem (422) naming the field and the rule.
 StabilityRequest decode_stability_request(const nlohmann::json& doc);
 

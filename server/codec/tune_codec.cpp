@@ -6,6 +6,8 @@
 
 #include "codec/json_writer.h"
 #include "codec/problem.h"
+#include "codec/stability_codec.h"
+#include "softtune/chain_solvers.h"
 #include "softtune/validation.h"
 
 namespace softtune::codec {
@@ -205,9 +207,35 @@ TuneRequest read_tune_fields(ObjectReader& r) {
   return q;
 }
 
+namespace {
+
+// chain: {"mass_ratio": m2 / m1 in [1, 1e9] (required), "margin": [1, 10] (default 1.25), "solvers": names}
+// (docs/accuracy-and-stability.md, "The design answer"). Only the tune contract reads it.
+std::optional<ChainAsk> read_chain_ask(ObjectReader& parent) {
+  auto o = parent.object("chain");
+  if (!o) return std::nullopt;
+  ObjectReader& r = *o;
+  ChainAsk a;
+  const auto ratio = r.number("mass_ratio");
+  if (!ratio || !(*ratio >= 1.0 && *ratio <= kMaxMassRatio)) {
+    throw invalid_field(r.field("mass_ratio"), "is required: a number in [1, 1e9] (the weight's mass over the link's)");
+  }
+  a.mass_ratio = *ratio;
+  if (auto m = r.number("margin")) {
+    if (!(*m >= 1.0 && *m <= kMaxChainMargin)) throw invalid_field(r.field("margin"), "must be a number in [1, 10]");
+    a.margin = *m;
+  }
+  if (auto x = read_chain_solvers(r.raw("solvers"), r.field("solvers"))) a.solvers = *x;
+  r.finish();
+  return a;
+}
+
+}  // namespace
+
 TuneRequest decode_tune_request(const json& doc) {
   ObjectReader r = read_object(doc, "");
   TuneRequest q = read_tune_fields(r);
+  q.chain = read_chain_ask(r);
   r.finish();
   return q;
 }
@@ -248,6 +276,43 @@ void add_engine_reports(json& engines_out, const std::vector<engines::EngineRepo
     e["exact_predicted"] = r.exact_predicted ? engine_prediction_json(*r.exact_predicted) : json();
     e["warnings"] = warnings_json(r.warnings);
   }
+}
+
+const char* verdict_text(Verdict v) {
+  return v == Verdict::stable ? "stable" : v == Verdict::marginal ? "marginal" : "unstable";
+}
+
+// The chain's design answer per solver (chain_design.h): the limit with the request's settings, and the
+// fewest counts that reach margin x the asked frequency.
+json chain_design_json(const ChainAsk& ask, const TuneResult& r) {
+  json solvers = json::object();
+  for (const ChainDesign& d : r.chain) {
+    const ChainLimit& l = d.limit;
+    std::optional<double> unstable_hz;
+    if (l.lowest_unstable_frequency_ratio) unstable_hz = *l.lowest_unstable_frequency_ratio / d.settings.h;
+    solvers[std::string(chain_solver_name(d.settings.solver))] = {
+        {"count_name", chain_count_name(d.settings.solver)},
+        {"count", d.settings.count},
+        {"warm_start", d.settings.warm_start},
+        {"limit", limit_kind_name(l.kind)},
+        {"highest_stable_frequency_hz", number_or_null(l.highest_stable_frequency_hz)},
+        {"lowest_unstable_frequency_hz", number_or_null(unstable_hz)},
+        {"confirmed", l.confirmed},
+        {"observed_stable_side", l.observed_stable_side ? json(verdict_text(*l.observed_stable_side)) : json()},
+        {"observed_unstable_side", l.observed_unstable_side ? json(verdict_text(*l.observed_unstable_side)) : json()},
+        {"stable_at_target", d.stable_at_target},
+        {"meets_margin", d.meets_margin},
+        {"fewest_count", d.fewest_count ? json(*d.fewest_count) : json()},
+        {"fewest_count_highest_stable_frequency_hz", number_or_null(d.fewest_count_limit_hz)},
+    };
+  }
+  return {{"mass_ratio", number_or_null(ask.mass_ratio)},
+          {"margin", number_or_null(ask.margin)},
+          {"frequency_hz", number_or_null(r.frequency_hz)},
+          {"damping_ratio", number_or_null(r.damping_ratio)},
+          {"h", number_or_null(r.h)},
+          {"max_count_searched", kMaxDesignCount},
+          {"solvers", std::move(solvers)}};
 }
 
 json engines_json(const EngineExport& e) {
@@ -329,7 +394,22 @@ json encode_tune_result(const TuneRequest& q, const TuneResult& r) {
   }
   out["stability"] = std::move(stability);
   add_engine_reports(out["engines"], r.engine_reports);
+  if (q.chain) out["chain"] = chain_design_json(*q.chain, r);
   return out;
+}
+
+json encode_exact_motion(const ExactMotion& m) {
+  const Eigen::Matrix2d& e = m.step_matrix;
+  json x = json::array();
+  for (double v : m.smooth_x) x.push_back(number_or_null(v));
+  return {{"duration_s", number_or_null(m.duration_s)},
+          {"step_matrix", {{number_or_null(e(0, 0)), number_or_null(e(0, 1))}, {number_or_null(e(1, 0)), number_or_null(e(1, 1))}}},
+          {"smooth", {{"dt_s", number_or_null(m.smooth_dt_s)}, {"x", std::move(x)}}}};
+}
+
+json encode_mass_terms(const InverseMassTerms& t) {
+  return {{"body_a", {{"translational", number_or_null(t.a_translational)}, {"rotational", number_or_null(t.a_rotational)}}},
+          {"body_b", {{"translational", number_or_null(t.b_translational)}, {"rotational", number_or_null(t.b_rotational)}}}};
 }
 
 }  // namespace softtune::codec

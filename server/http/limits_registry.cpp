@@ -3,6 +3,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/check_app.h"
+#include "app/check_cost.h"
+#include "app/check_request.h"
 #include "app/preset_store.h"
 #include "app/preview_service.h"
 #include "codec/json_reader.h"
@@ -11,6 +14,7 @@
 #include "codec/verify_codec.h"
 #include "http/limits.h"
 #include "softtune/accuracy.h"
+#include "softtune/chain_design.h"
 #include "softtune/engines/verify.h"
 #include "softtune/render/frame_pipeline.h"
 #include "softtune/render/renderer.h"
@@ -82,6 +86,10 @@ std::vector<NumericLimit> numeric_limits() {
       {"max_preview_frames", D(render::caps::kMaxFrames)},
       {"max_preview_width", D(render::caps::kMaxWidth)},
       {"max_preview_height", D(render::caps::kMaxHeight)},
+      {"check_max_work", app::kMaxCheckWork},
+      {"check_max_presets", D(app::kMaxCheckPresets)},
+      {"check_max_scenes", D(app::kMaxCheckScenes)},
+      {"check_max_rates", D(sl::kMaxRates)},
   };
 }
 
@@ -171,6 +179,15 @@ std::vector<LimitRow> request_rows() {
            " rad/s, " + figure(sl::kMaxPolygonVertices) + " polygon vertices, ids <= " + figure(sl::kMaxIdLength) +
            " characters",
        "`scene/include/softtune/scene/limits.h`", "422 naming the field"},
+      {"check request",
+       figure(app::kMaxCheckPresets) + " preset names, " + figure(app::kMaxCheckScenes) + " inline scenes, " +
+           figure(sl::kMaxRates) + " entries each of fps, substeps (and of a preset's rates), shard I/N with N <= " +
+           figure(app::kMaxShards) + "; estimated work, frames x substeps x (bodies + joints) summed over every case, <= " +
+           figure(app::kMaxCheckWork) + " body-steps (about 2 s of one core); `softtune check -j` 1 to " +
+           figure(app::kMaxCheckJobs),
+       "`server/app/check_request.h`, `server/app/check_cost.h` `kMaxCheckWork`, `server/app/check_app.h`, "
+       "`scene/include/softtune/scene/limits.h` `kMaxRates`",
+       "422 naming the field; above the work budget 422 naming `presets, scenes, fps, substeps` before any step"},
       {"simulate options", "frame_stride 1 to " + figure(codec::kMaxFrameStride),
        "`server/codec/scene_codec.h` `kMaxFrameStride`", "422 naming the field"},
       {"accuracy request",
@@ -185,8 +202,16 @@ std::vector<LimitRow> request_rows() {
            figure(codec::kMaxObserveSteps) + ", frequency ratio <= " + figure(codec::kMaxFrequencyRatio) + ", step " +
            figure(codec::kMinStep) + " to " + figure(codec::kMaxStep) + " s, stiffness <= " +
            figure(codec::kMaxStiffness) + " N/m, mass ratio <= " + figure(codec::kMaxMassRatio) +
-           ", chain iterations <= " + figure(codec::kMaxChainIterations),
+           ", chain iterations <= " + figure(codec::kMaxChainIterations) + ", chain solvers 1 to " +
+           figure(kAllChainSolvers.size()) + " names",
        "`server/codec/stability_codec.h`", "422 naming the field"},
+      {"tune `chain`",
+       "mass_ratio 1 to " + figure(codec::kMaxMassRatio) + " (required), margin 1 to " + figure(kMaxChainMargin) +
+           ", solvers 1 to " + figure(kAllChainSolvers.size()) + " names; the fewest-count search stops at " +
+           figure(kMaxDesignCount) + " (`null` beyond)",
+       "`server/codec/stability_codec.h` `kMaxMassRatio`; `core/include/softtune/chain_design.h` `kMaxChainMargin`, "
+       "`kMaxDesignCount`",
+       "422 naming `chain.<field>`"},
       {"verify request",
        "at most " + figure(codec::kVerifyMaxEngines) + " engine names; duration_s in (0, " +
            figure(engines::kVerifyMaxDuration) + "] s and duration x fps x substeps <= " +

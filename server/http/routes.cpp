@@ -5,6 +5,7 @@
 #include "app/tune_app.h"
 #include "codec/tune_codec.h"
 #include "http/capability_routes.h"
+#include "http/check_routes.h"
 #include "http/openapi.h"
 #include "http/preview_routes.h"
 #include "http/static_files.h"
@@ -81,6 +82,7 @@ std::vector<Route> service_routes() {
       {"GET", "/api/v1/health", health},
       {"POST", "/api/v1/tune", json_contract(app::run_tune, "tune")},
       {"POST", "/api/v1/simulate", simulate},
+      {"POST", "/api/v1/check", check},
       {"POST", "/api/v1/verify", json_contract(app::run_verify, "")},
       {"GET", "/api/v1/presets", presets},
       {"GET", "/api/v1/presets/{name}", preset},

@@ -36,8 +36,27 @@ TEST(StabilityCodec, CustomSweepHasEveryField) {
     }
   }
   const json& chain = out.at("chain");
-  EXPECT_EQ(chain.at("limits").size(), 2u * 2u * 2u);  // ratios x iterations x warm start
+  EXPECT_EQ(chain.at("limits").size(), 4u * 2u * 2u * 2u);  // solvers x ratios x iterations x warm start
   EXPECT_EQ(chain.at("mismatches"), 0);
+  EXPECT_EQ(chain.at("unconfirmed_limits"), 0);
+  for (const json& l : chain.at("limits")) {
+    // A found limit is a bracket no wider than the tolerance, confirmed by simulating both sides.
+    if (l.at("limit") != "found") continue;
+    const double lo = l.at("highest_stable_frequency_ratio"), hi = l.at("lowest_unstable_frequency_ratio");
+    EXPECT_LE(hi / lo - 1.0, chain.at("limit_relative_tolerance").get<double>());
+    EXPECT_EQ(l.at("observed_unstable_side"), "unstable");
+    EXPECT_NE(l.at("observed_stable_side"), "unstable");
+  }
+  // Semi-implicit Euler's limit from the step limits: omega h = 2 at zeta 0 (explicit_euler is not asked).
+  bool soft_seen = false;
+  for (const json& l : out.at("step_limits").at("limits")) {
+    EXPECT_NE(l.at("method"), "semi_implicit_euler");
+    if (l.at("method") == "soft") {
+      EXPECT_EQ(l.at("limit"), "none_in_range");
+      soft_seen = true;
+    }
+  }
+  EXPECT_TRUE(soft_seen);
   const json stages = out.at("stages");
   EXPECT_NE(std::find(stages.begin(), stages.end(), "sequential_impulse_chain"), stages.end());
 }
@@ -56,7 +75,8 @@ TEST(StabilityCodec, SvgHasMapsAndChain) {
   request["include_cases"] = false;
   const std::string svg = stability_svg(run_stability(request));
   for (const char* text : {"Stability map at zeta = 0:", "Stability map at zeta = 10:", "highest stable f h",
-                           "1 iterations, warm start", "semi_implicit_euler"}) {
+                           "1 iterations, warm start", "semi_implicit_euler",
+                           "Chain in box2d_v3", "4 substeps, warm start"}) {
     EXPECT_NE(svg.find(text), std::string::npos) << text;
   }
 }

@@ -33,6 +33,8 @@ TEST(StabilityCodec, BadFieldsNameTheField) {
   expect_problem("steps", {1.0 / 60, 5.0}, "steps[1]");
   expect_problem("observe_steps", 10, "observe_steps");
   expect_problem("chain", {{"iterations", {0}}}, "chain.iterations[0]");
+  expect_problem("chain", {{"solvers", {"jolt", "physx"}}}, "chain.solvers[1]");
+  expect_problem("chain", {{"solvers", json::array()}}, "chain.solvers");
   expect_problem("frequency_ratios", json::array(), "frequency_ratios");
   expect_problem("colour", 1, "colour");
 }

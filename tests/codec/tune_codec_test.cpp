@@ -120,3 +120,26 @@ TEST(TuneCodec, BadInputNamesTheField) {
             std::make_pair(422, std::string("constraint.axis")));
   EXPECT_EQ(problem_of(json::array()).first, 422);
 }
+
+// The chain question: each named solver answers with its limit and the fewest counts; bad fields are named.
+TEST(TuneCodec, ChainAnswersPerSolverAndNamesBadFields) {
+  json doc = base();
+  doc["chain"] = {{"mass_ratio", 1000}, {"solvers", {"box2d_v2_4", "rapier"}}};
+  doc["engine_settings"] = {{"box2d_v2_4", {{"velocityIterations", 1}}}};
+  const json out = run_tune(doc);
+  const json& chain = out.at("chain");
+  EXPECT_EQ(chain.at("solvers").size(), 2u);
+  const json& b = chain.at("solvers").at("box2d_v2_4");
+  EXPECT_EQ(b.at("count"), 1);  // the request's velocityIterations
+  EXPECT_EQ(b.at("count_name"), "velocityIterations");
+  EXPECT_TRUE(b.at("confirmed").get<bool>());
+  EXPECT_DOUBLE_EQ(chain.at("margin").get<double>(), 1.25);
+  EXPECT_FALSE(base().contains("chain"));
+  EXPECT_FALSE(run_tune(base()).contains("chain"));
+  EXPECT_EQ(with([](json& d) { d["chain"] = {{"margin", 2}}; }), std::make_pair(422, std::string("chain.mass_ratio")));
+  EXPECT_EQ(with([](json& d) { d["chain"] = {{"mass_ratio", 0.5}}; }), std::make_pair(422, std::string("chain.mass_ratio")));
+  EXPECT_EQ(with([](json& d) { d["chain"] = {{"mass_ratio", 10}, {"margin", 11}}; }), std::make_pair(422, std::string("chain.margin")));
+  EXPECT_EQ(with([](json& d) { d["chain"] = {{"mass_ratio", 10}, {"solvers", {"ode"}}}; }),
+            std::make_pair(422, std::string("chain.solvers[0]")));
+  EXPECT_EQ(with([](json& d) { d["chain"] = {{"mass_ratio", 10}, {"links", 3}}; }), std::make_pair(422, std::string("chain.links")));
+}

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include <Eigen/LU>
+
 using namespace softtune;
 
 namespace {
@@ -56,4 +58,32 @@ TEST(Analytic, NoSpringIsFreeFlight) {
   const State s = analytic_state({1.0, 2.0}, 0.0, 0.0, 3.0);
   EXPECT_DOUBLE_EQ(s.x, 7.0);
   EXPECT_DOUBLE_EQ(s.v, 2.0);
+}
+
+TEST(Analytic, StepMatrixIteratesTheClosedForm) {
+  // Iterating the one-step flow lands on the closed form at every step, in every regime.
+  for (double zeta : {0.0, 0.5, 1.0, 2.5}) {
+    const double omega = 2 * M_PI * 5.0, h = 1.0 / 60.0;
+    const Eigen::Matrix2d e = analytic_step_matrix(omega, zeta, h);
+    Eigen::Vector2d s(1.0, 0.0);
+    for (int n = 1; n <= 36; ++n) {
+      s = e * s;
+      const State exact = analytic_state({1.0, 0.0}, omega, zeta, n * h);
+      EXPECT_NEAR(s.x(), exact.x, 1e-12) << zeta << " " << n;
+      EXPECT_NEAR(s.y(), exact.v, 1e-10) << zeta << " " << n;
+    }
+    // det E = exp(-2 zeta omega h): the flow shrinks areas as the damping takes energy out.
+    EXPECT_NEAR(e.determinant(), std::exp(-2 * zeta * omega * h), 1e-12) << zeta;
+  }
+}
+
+TEST(Analytic, ExactMotionCoversThreePeriods) {
+  const double f = 0.5, omega = 2 * M_PI * f;
+  const ExactMotion m = exact_motion(omega, 0.0, f, 1.0 / 60.0);
+  EXPECT_DOUBLE_EQ(m.duration_s, 6.0);
+  ASSERT_EQ(m.smooth_x.size(), static_cast<std::size_t>(kExactMotionPoints + 1));
+  // Undamped from x0 = 1: a cosine, back at 1 after each whole period.
+  for (std::size_t i = 0; i < m.smooth_x.size(); ++i) EXPECT_NEAR(m.smooth_x[i], std::cos(omega * i * m.smooth_dt_s), 1e-12);
+  EXPECT_NEAR(m.smooth_x.back(), 1.0, 1e-12);
+  EXPECT_DOUBLE_EQ(exact_motion(0.0, 0.0, 0.0, 0.01).duration_s, 1.0);  // no spring: one second
 }

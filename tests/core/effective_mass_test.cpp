@@ -1,4 +1,5 @@
 #include "softtune/effective_mass.h"
+#include "softtune/effective_mass_terms.h"
 
 #include <gtest/gtest.h>
 
@@ -59,6 +60,31 @@ TEST(EffectiveMass, OffsetAnchorAddsPerpendicularLeverOverInertia) {
   }
   // b2LinearStiffness sees only the mass.
   EXPECT_DOUBLE_EQ(box2d_reduced_mass(0.0, true, m, false), m);
+}
+
+TEST(EffectiveMass, TermsAreEachBodysMassAndLever) {
+  // Body A 2 kg, I = 0.5 at the origin, anchor 0.3 m off across the axis; body B 3 kg, I = 0.4, anchor
+  // 0.5 m off: K = 1/2 + 0.3^2 / 0.5 + 1/3 + 0.5^2 / 0.4.
+  Constraint2D c;
+  c.body_a = body2d(2.0, 0.5, {0, 0});
+  c.body_b = body2d(3.0, 0.4, {1, 0});
+  c.anchor_a = {0, 0.3};
+  c.anchor_b = {1, 0.5};
+  c.axis = {1, 0};
+  const InverseMassTerms t = inverse_effective_mass_terms(c);
+  EXPECT_DOUBLE_EQ(t.a_translational, 0.5);
+  EXPECT_NEAR(t.a_rotational, 0.09 / 0.5, 1e-15);
+  EXPECT_DOUBLE_EQ(t.b_translational, 1.0 / 3.0);
+  EXPECT_NEAR(t.b_rotational, 0.25 / 0.4, 1e-15);
+  EXPECT_NEAR(inverse_effective_mass(c), 0.5 + 0.18 + 1.0 / 3.0 + 0.625, 1e-15);
+  c.body_a = ground2d();  // a static body adds nothing
+  const InverseMassTerms g = inverse_effective_mass_terms(c);
+  EXPECT_EQ(g.a_translational, 0.0);
+  EXPECT_EQ(g.a_rotational, 0.0);
+  c.type = ConstraintType::angular;  // angular: only 1/I
+  const InverseMassTerms r = inverse_effective_mass_terms(c);
+  EXPECT_EQ(r.b_translational, 0.0);
+  EXPECT_DOUBLE_EQ(r.b_rotational, 1.0 / 0.4);
 }
 
 TEST(EffectiveMass, AngularIsTheReducedInertia) {

@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "app/accuracy_app.h"
+#include "app/check_cost.h"
+#include "app/check_request.h"
 #include "app/verify_app.h"
 #include "app/stability_app.h"
 #include "codec/accuracy_codec.h"
@@ -24,6 +26,7 @@
 #include "http/routes.h"
 #include "openapi_conformance.h"
 #include "softtune/accuracy.h"
+#include "softtune/designer.h"
 #include "softtune/render/frame_pipeline.h"
 #include "softtune/scene/limits.h"
 
@@ -125,7 +128,11 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["stability_max_grid_entries"], softtune::codec::kMaxGridEntries);
   EXPECT_EQ(x["stability_max_cases"], softtune::codec::kMaxCases);
   EXPECT_EQ(x["stability_max_observe_steps"], softtune::codec::kMaxObserveSteps);
-  EXPECT_EQ(x.size(), 30u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x["check_max_work"], softtune::app::kMaxCheckWork);
+  EXPECT_EQ(x["check_max_presets"], softtune::app::kMaxCheckPresets);
+  EXPECT_EQ(x["check_max_scenes"], softtune::app::kMaxCheckScenes);
+  EXPECT_EQ(x["check_max_rates"], softtune::scene::limits::kMaxRates);
+  EXPECT_EQ(x.size(), 34u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {
@@ -156,6 +163,17 @@ TEST(OpenApi, TuneSchemasAgreeWithTheCodec) {
     const json response = softtune::app::run_tune(request);
     EXPECT_EQ(conformance_error("/api/v1/tune", "post", 200, "application/json", response), "") << request.dump();
   }
+}
+
+// The page reads the designer's oscillation words from here (web/state.js), so they must be core's.
+TEST(OpenApi, OscillationWordsMapToCoresDampingRatios) {
+  const json& words = openapi_document()["components"]["schemas"]["TuneRequest"]["properties"]["oscillation"];
+  const json& zeta = words["x-damping-ratio"];
+  ASSERT_EQ(zeta.size(), 3u);
+  EXPECT_EQ(words["enum"], json({"free", "some", "none"}));
+  EXPECT_EQ(zeta["free"].get<double>(), softtune::damping_ratio_of(softtune::Oscillation::free));
+  EXPECT_EQ(zeta["some"].get<double>(), softtune::damping_ratio_of(softtune::Oscillation::some));
+  EXPECT_EQ(zeta["none"].get<double>(), softtune::damping_ratio_of(softtune::Oscillation::none));
 }
 
 TEST(OpenApi, TuneRequestSchemaRefusesWhatTheCodecRefuses) {
@@ -190,6 +208,7 @@ TEST(OpenApi, CapabilityExamplesRunAndConform) {
       {"/api/v1/accuracy", [](const json& q) { return softtune::app::run_accuracy(q); }},
       {"/api/v1/stability", [](const json& q) { return softtune::app::run_stability(q); }},
       {"/api/v1/verify", [](const json& q) { return softtune::app::run_verify(q); }},
+      {"/api/v1/check", [&](const json& q) { return softtune::app::run_check_request(q, presets).json; }},
   };
   for (const auto& [path, contract] : contracts) {
     const json& body = openapi_document()["paths"][path]["post"]["requestBody"]["content"]["application/json"];

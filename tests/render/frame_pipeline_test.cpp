@@ -225,6 +225,46 @@ TEST(FramePipeline, ProgressReachesTheTotal) {
   EXPECT_EQ(done.done, 20);
 }
 
+// Frames stream: frame 0 is served while later frames are still held in the renderer, and the bytes
+// served early are the bytes of the finished preview.
+class GatedRenderer final : public Renderer {
+ public:
+  explicit GatedRenderer(std::atomic<bool>* open) : open_(open) {}
+  void render(const DrawFrame& frame, const Camera&, ImageSize, std::span<std::uint8_t> rgba) override {
+    while (frame.caption == "hold" && !open_->load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    std::fill(rgba.begin(), rgba.end(), static_cast<std::uint8_t>(frame.caption == "hold" ? 200 : 50));
+  }
+
+ private:
+  std::atomic<bool>* open_;
+};
+
+TEST(FramePipeline, AnEncodedFrameIsServedBeforeTheOthersFinish) {
+  std::atomic<bool> open{false};
+  PipelineOptions o;
+  o.make_renderer = [&open] { return std::make_unique<GatedRenderer>(&open); };
+  FramePipeline p(o);
+  const auto job = p.submit("gated", small(6), [] {
+    FrameSet set = sliding_box(6);
+    for (std::size_t k = 1; k < set.frames.size(); ++k) set.frames[k].caption = "hold";
+    return set;
+  });
+  while (job->progress().ready < 1) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  const PreviewProgress early = job->progress();
+  EXPECT_FALSE(early.finished);
+  EXPECT_EQ(early.ready, 1);
+  const auto first = job->frame_png(0);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_EQ(test::decode_png(*first).rgba.at(0), 50);
+  EXPECT_FALSE(job->frame_png(1).has_value()) << "frame 1 is still held";
+  EXPECT_FALSE(job->frame_png(6).has_value());
+  open = true;
+  const auto preview = job->wait();
+  EXPECT_EQ(job->progress().ready, 6);
+  EXPECT_EQ(*first, preview->frames_png[0]);
+  EXPECT_EQ(job->frame_png(1), preview->frames_png[1]);
+}
+
 TEST(FramePipeline, AFailedFrameFailsTheJobAndIsNotCached) {
   std::atomic<bool> failing{true};
   FramePipeline p(fake_options(&failing));

@@ -58,4 +58,15 @@ TEST(SchemaLimits, TuningBoundsAreTheTuneRequestLimits) {
   EXPECT_EQ(def("/oscillator/properties/effective_mass")["maximum"].get<double>(), vl::kMaxMass);
 }
 
+// A preset's rates and an expectation's fps / substeps lists (softtune check, docs/preset-ci.md).
+TEST(SchemaLimits, RateListsAreTheSceneLimits) {
+  EXPECT_EQ(def("/fps_list")["maxItems"].get<std::size_t>(), sl::kMaxRates);
+  EXPECT_EQ(def("/fps_list/items")["minimum"].get<double>(), softtune::limits::kMinFps);
+  EXPECT_EQ(def("/fps_list/items")["maximum"].get<double>(), sl::kMaxSceneFps);
+  EXPECT_EQ(def("/substeps_list")["maxItems"].get<std::size_t>(), sl::kMaxRates);
+  EXPECT_EQ(def("/substeps_list/items")["maximum"].get<int>(), sl::kMaxSceneSubsteps);
+  EXPECT_EQ(schema().at("/properties/rates/properties/fps/$ref"_json_pointer), "#/$defs/fps_list");
+  EXPECT_EQ(def("/expectation/properties/substeps/$ref"), "#/$defs/substeps_list");
+}
+
 }  // namespace

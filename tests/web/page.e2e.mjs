@@ -258,7 +258,8 @@ test('the page shows the API numbers, follows the controls, restores a shared UR
   const { status, doc } = await api('POST', 'api/v1/tune', { ...shared, effective_mass: -2 });
   assert.equal(status, 422);
   assert.equal(doc.field, 'effective_mass');
-  assert.equal(message, doc.detail);
+  // In designer words: the control's name and the API's rule, no request field names.
+  assert.equal(message, `Effective mass ${doc.detail}`);
   // The long status message must not squeeze the results column (1280 - 360 px of controls - margins).
   const resultsWidth = await reloaded.evaluate(() => document.getElementById('results').getBoundingClientRect().width);
   assert.ok(resultsWidth > 800, `results column ${resultsWidth} px wide`);
@@ -310,6 +311,237 @@ test('picking a preset fills the controls from its scene and simulates it', asyn
   }
   await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: path.join(shotDir, 'web-screenshot-preset.png'), fullPage: true });
+  await page.close();
+  assert.deepEqual(consoleErrors, [], 'no console errors');
+});
+
+// ---- the designer's loop (issue 16) ----------------------------------------------------------------
+
+/// Sets a control's value as a user's drag or typing ends: input, then change (one history entry).
+async function setControl(page, selector, value) {
+  await page.locator(selector).evaluate((el, v) => {
+    el.value = v;
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+    el.dispatchEvent(new Event('change', { bubbles: true }));
+  }, value);
+}
+
+/// Waits until the preview shows a loaded frame of the request the page last sent, and returns that
+/// request with the preview id and the note.
+async function previewShown(page) {
+  await page.waitForFunction(() => {
+    const img = document.querySelector('[data-testid="preview"]');
+    return document.body.dataset.pending === '0' && img.naturalWidth > 0 && img.dataset.request &&
+      document.getElementById('preview-note').textContent !== '' && document.getElementById('preview-progress').hidden;
+  }, null, { timeout: 60000 });
+  const img = page.getByTestId('preview');
+  const src = await img.getAttribute('src');
+  return { request: JSON.parse(await img.getAttribute('data-request')), id: src.split('/').at(-2),
+    note: await page.locator('#preview-note').textContent() };
+}
+
+async function png(url) {
+  const r = await fetch(new URL(url, base));
+  assert.equal(r.status, 200, url);
+  return Buffer.from(await r.arrayBuffer());
+}
+
+test('a preset previews its own scene with the page tuning, plays it in real time, and a link restores it exactly', async (t) => {
+  const served = await routes();
+  if (!served.has('POST /api/v1/preview') || !served.has('GET /api/v1/presets/{name}')) {
+    t.skip('this server has no preview or presets routes');
+    return;
+  }
+  const { doc: vehicle } = await api('GET', 'api/v1/presets/vehicle');
+  const page = await openPage(`${base}?preset=vehicle&frames=30&mode=exact`, { width: 1440, height: 900 });
+  let shown = await previewShown(page);
+  // The link's preset, scene and tuning, not the 1-D block.
+  assert.equal(await page.locator('#preset').inputValue(), 'vehicle');
+  assert.equal(shown.request.preset, 'vehicle');
+  assert.deepEqual(shown.request.tuning, { fps: 60, substeps: 1, response_frames: 30, basis_fps: 60, mode: 'exact', oscillation: 'some' });
+  assert.deepEqual(await page.locator('#probes tbody tr').evaluateAll((rows) => rows.map((r) => r.dataset.probe)),
+    vehicle.probes.map((p) => p.id));
+  // The numbers describe a joint of the scene, on the effective mass its bodies give (item 6).
+  const joints = await api('POST', 'api/v1/simulate', { preset: 'vehicle', tuning: shown.request.tuning });
+  const rear = joints.doc.joints.find((j) => j.id === 'rear_suspension');
+  assert.equal(Number(await page.getByTestId('effective-mass').getAttribute('data-value')), rear.model_mass);
+  assert.equal(Number(await page.getByTestId('k').getAttribute('data-value')), rear.stiffness);
+  assert.equal(await page.locator('#joints tbody tr').count(), joints.doc.joints.filter((j) => j.tuned).length);
+  // Real time over the whole duration (item 2): frames * dt = the scene's duration, and it plays by itself.
+  const dt = Number(await page.getByTestId('preview').getAttribute('data-frame-seconds'));
+  assert.ok(Math.abs((shown.request.frames - 1) * dt - vehicle.world.duration_s) < 1e-9, `${shown.request.frames} frames of ${dt} s`);
+  await page.waitForFunction(() => document.getElementById('play').getAttribute('aria-pressed') === 'true', null, { timeout: 20000 });
+  const frameAt = () => page.getByTestId('preview').evaluate((img) => [performance.now(), Number(img.dataset.frame)]);
+  const [t0, f0] = await frameAt();
+  await page.waitForTimeout(1000);
+  const [t1, f1] = await frameAt();
+  const n = shown.request.frames;
+  const advanced = (f1 - f0 + n) % n;
+  const expected = (t1 - t0) / 1000 / dt;
+  assert.ok(Math.abs(advanced - expected) <= 0.35 * expected + 2, `${advanced} frames in ${t1 - t0} ms, real time ${expected}`);
+  assert.match(shown.note, /rendered in|from the cache/);
+
+  // The frames follow the tuning: a slower spring gives other pictures of the same scene.
+  const lastBefore = await png(`api/v1/preview/${shown.id}/${n - 1}.png`);
+  await setControl(page, '#frames', '60');
+  await settled(page);
+  const after = await previewShown(page);
+  assert.equal(after.request.tuning.response_frames, 60);
+  assert.notEqual(after.id, shown.id, 'a new preview for the new tuning');
+  const lastAfter = await png(`api/v1/preview/${after.id}/${n - 1}.png`);
+  assert.ok(!lastAfter.equals(lastBefore), 'the last frame of the preview changed with the tuning');
+  assert.doesNotMatch(after.note, /from the cache/, `a fresh render is not from the cache: ${after.note}`);
+  // Undo and redo through the browser history (item 8).
+  await page.goBack();
+  await settled(page);
+  assert.equal(await page.locator('#frames').inputValue(), '30');
+  assert.equal((await previewShown(page)).id, shown.id);
+  await page.goForward();
+  await settled(page);
+  assert.equal(await page.locator('#frames').inputValue(), '60');
+  const link = page.url();
+  await page.close();
+
+  // A reload of the link previews the same preset with the same tuning (the same preview id), from the cache.
+  const reloaded = await openPage(link, { width: 1440, height: 900 });
+  const again = await previewShown(reloaded);
+  assert.deepEqual(again.request, after.request);
+  assert.equal(again.id, after.id);
+  assert.match(again.note, /from the cache/);
+  await reloaded.close();
+  assert.deepEqual(consoleErrors, [], 'no console errors');
+});
+
+test('an empty or non-numeric field is named at the field and never reads "Up to date"', async () => {
+  const page = await openPage(base);
+  const sent = await page.evaluate(() => JSON.stringify(window.softtune.request));
+  await page.locator('#fps').fill('');
+  await page.waitForFunction(() => document.body.dataset.pending === '0');
+  assert.doesNotMatch(await page.getByTestId('status').textContent(), /Up to date/);
+  assert.match(await page.getByTestId('status').textContent(), /Frame rate is empty/);
+  assert.match(await page.locator('[data-field="fps"] .error').textContent(), /Frame rate is empty/);
+  assert.equal(await page.locator('#fps').getAttribute('aria-invalid'), 'true');
+  assert.equal(await page.evaluate(() => JSON.stringify(window.softtune.request)), sent, 'nothing was sent with a default');
+  // Text that is not a number (a number field keeps it as "bad input").
+  await page.locator('#fps').fill('60');
+  await settled(page);
+  await page.locator('#substeps').focus();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.type('e');
+  await page.waitForFunction(() => document.body.dataset.pending === '0');
+  assert.match(await page.locator('[data-field="substeps"] .error').textContent(), /Substeps per frame is not a number/);
+  assert.doesNotMatch(await page.getByTestId('status').textContent(), /Up to date/);
+  await page.locator('#substeps').fill('1');
+  await settled(page);
+  assert.equal(await page.getByTestId('status').textContent(), 'Up to date');
+  assert.equal(await page.locator('#substeps').getAttribute('aria-invalid'), null);
+  // An emptied mass says so, not "give exactly one of effective_mass or constraint".
+  await page.locator('#mass').fill('');
+  await page.waitForFunction(() => document.body.dataset.pending === '0');
+  const massError = await page.locator('[data-field="effective_mass"] .error').textContent();
+  assert.match(massError, /Effective mass is empty/);
+  assert.doesNotMatch(massError, /effective_mass|constraint/);
+  await page.close();
+  assert.deepEqual(consoleErrors, [], 'no console errors');
+});
+
+test('units agree across tables, the stiff preset shows its blow-ups, and the summary stays in view on a phone', async (t) => {
+  const served = await routes();
+  if (!served.has('POST /api/v1/simulate')) {
+    t.skip('this server cannot simulate');
+    return;
+  }
+  const page = await openPage(`${base}?preset=stiff`, { width: 390, height: 844 });
+  await page.waitForFunction(() => document.querySelectorAll('#probes tbody tr').length > 0 && document.body.dataset.pending === '0',
+    null, { timeout: 30000 });
+  // Explicit and semi-implicit Euler blow up at 20 Hz and 60 fps: "blew up", not a frequency fitted to it.
+  for (const probe of ['explicit_euler', 'semi_implicit_euler']) {
+    const cells = await page.locator(`#probes tr[data-probe="${probe}"] td`).allTextContents();
+    assert.equal(cells[1], 'blew up', `${probe}: ${cells}`);
+  }
+  assert.notEqual((await page.locator('#probes tr[data-probe="soft"] td').allTextContents())[1], 'blew up');
+  // Beside the preview, the 1-D springs at the preview's time: late in the run the Euler springs have blown
+  // up and the soft constraint has not (item 7).
+  await previewShown(page);
+  await page.locator('#scrub').evaluate((el) => { el.value = el.max; el.dispatchEvent(new Event('input', { bubbles: true })); });
+  await page.waitForFunction(() => document.getElementById('lanes').dataset.lane_explicit_euler === 'blew up', null, { timeout: 20000 });
+  assert.equal(await page.getByTestId('lanes').getAttribute('data-lane_semi_implicit_euler'), 'blew up');
+  assert.ok(Number.isFinite(Number(await page.getByTestId('lanes').getAttribute('data-lane_soft'))));
+  // Damping errors are differences of ratios in both tables (a sign and three decimals), never percent.
+  assert.match(await page.getByTestId('damping-error').textContent(), /^[+−]\d\.\d{3}$/);
+  for (const cell of await page.locator('#probes tbody tr td:nth-child(7)').allTextContents()) assert.match(cell, /^([+−]\d+\.\d{3}|—)$/);
+  // One axis per unit: the stiff preset measures lengths only.
+  assert.equal(await page.getByTestId('plot-simulation').getAttribute('data-units'), 'm');
+  // The summary bar stays in view while the response slider is dragged on a phone.
+  await page.locator('#frames').scrollIntoViewIfNeeded();
+  await page.locator('#frames').focus();
+  await page.keyboard.press('ArrowLeft');
+  await settled(page);
+  const box = await page.getByTestId('summary').boundingBox();
+  assert.ok(box.y >= -1 && box.y + box.height <= 844, `summary at ${box.y}..${box.y + box.height}`);
+  const slider = await page.locator('#frames').boundingBox();
+  assert.ok(slider.y >= 0 && slider.y < 844, 'the slider is in view too');
+  assert.equal(await page.getByTestId('summary-k').textContent(), await page.getByTestId('k').textContent());
+  await page.screenshot({ path: path.join(shotDir, 'web-screenshot-phone.png') });
+  await page.close();
+  assert.deepEqual(consoleErrors, [], 'no console errors');
+});
+
+test('A/B against a pinned tuning, export and import as a simulate request, a constraint\'s mass terms, data tables', async () => {
+  const page = await openPage(`${base}?body=constraint&b_mass=3&b_inertia=0.4`, { width: 1440, height: 900 });
+  // The effective mass term by term (item 6): body B 3 kg, I 0.4, anchor 0.5 m across the x axis.
+  const terms = await page.getByTestId('mass-terms').locator('td').evaluateAll((tds) => tds.map((td) => Number(td.dataset.value)));
+  assert.ok(Math.abs(terms[2] - 1 / 3) < 1e-12 && Math.abs(terms[3] - 0.25 / 0.4) < 1e-12 && terms[0] === 0 && terms[1] === 0, `${terms}`);
+  assert.ok(Math.abs(1 / terms[4] - Number(await page.getByTestId('effective-mass').getAttribute('data-value'))) < 1e-12);
+  assert.ok(await page.locator('#constraint-drawing circle.anchor').count() === 2, 'the drawing shows both anchors');
+
+  // Pin A, change to B: the numbers show both, the response plot overlays A, the modes stand out.
+  const kA = Number(await page.getByTestId('k').getAttribute('data-value'));
+  await page.getByTestId('pin').click();
+  await setControl(page, '#frames', '30');
+  await settled(page);
+  assert.equal(Number(await page.getByTestId('a-k').getAttribute('data-value')), kA);
+  assert.notEqual(Number(await page.getByTestId('k').getAttribute('data-value')), kA);
+  const legend = await page.getByTestId('plot-response').locator('.u-legend .u-series').allTextContents();
+  assert.ok(legend.some((l) => l.startsWith('A:')), legend.join('|'));
+  assert.ok(legend.some((l) => l.includes('Soft constraint (chosen)')), legend.join('|'));
+  await page.waitForFunction(() => !document.getElementById('preview-a').hidden && document.getElementById('preview-a').naturalWidth > 0,
+    null, { timeout: 30000 });
+  assert.notEqual(await page.getByTestId('preview-a').getAttribute('src'), await page.getByTestId('preview').getAttribute('src'));
+  // A pause is kept across new previews (item 2): the next tuning's frames load but do not play.
+  await page.waitForFunction(() => document.getElementById('play').getAttribute('aria-pressed') === 'true', null, { timeout: 20000 });
+  await page.locator('#play').click();
+  await setControl(page, '#frames', '31');
+  await settled(page);
+  const paused = await previewShown(page);
+  assert.equal(paused.request.response_frames, 31);
+  await page.waitForTimeout(300);
+  assert.equal(await page.locator('#play').getAttribute('aria-pressed'), 'false');
+  assert.equal(await page.getByTestId('preview').getAttribute('data-frame'), '0');
+
+  // Each plot has its numbers as a table behind it (item 10).
+  const details = page.locator('details[data-for="plot-response"]');
+  await details.locator('summary').click();
+  await details.locator('tbody tr').first().waitFor();  // built on the toggle event, which comes after the click
+  assert.ok(await details.locator('tbody tr').count() > 10);
+
+  // Export: a file `softtune simulate --request` accepts as it is (item 8).
+  const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#export').click()]);
+  const file = path.join(shotDir, 'page-export.json');
+  await download.saveAs(file);
+  const { execFileSync } = await import('node:child_process');
+  const out = JSON.parse(execFileSync(softtune, ['simulate', '--request', file, '--presets', path.join(root, 'presets')], { encoding: 'utf8' }));
+  assert.ok(Math.abs(out.probes[0].requested.frequency_hz - 60 / 31) < 1e-12, '31 frames at 60 fps');
+  // Import a preset request: the controls take it.
+  const { writeFileSync } = await import('node:fs');
+  const preset = path.join(shotDir, 'page-import.json');
+  writeFileSync(preset, JSON.stringify({ preset: 'mouse', tuning: { response_frames: 15, oscillation: 'none', mode: 'exact' } }));
+  await page.locator('#import').setInputFiles(preset);
+  await page.waitForFunction(() => document.getElementById('preset').value === 'mouse');
+  await settled(page);
+  assert.equal(await page.locator('#frames').inputValue(), '15');
+  assert.equal(await page.getByLabel('none', { exact: true }).isChecked(), true);
+  assert.match(page.url(), /preset=mouse/);
   await page.close();
   assert.deepEqual(consoleErrors, [], 'no console errors');
 });

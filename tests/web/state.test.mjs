@@ -4,9 +4,15 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { fromQuery, stateFromScene, toQuery, tuneRequest, tunedScene } from '../../web/state.js';
+import { readFileSync } from 'node:fs';
+import { fromQuery, presetRequest, previewFrames, stateFromScene, toQuery, tuneRequest } from '../../web/state.js';
 
 const softtune = process.env.SOFTTUNE_BIN ?? 'build/softtune';
+const presets = new URL('../../presets', import.meta.url).pathname;
+const simulate = (request) => JSON.parse(execFileSync(softtune, ['simulate', '--request', '-', '--presets', presets], { input: JSON.stringify(request), encoding: 'utf8' }));
+// The oscillation words as the server documents them (the page reads the same field at start).
+const WORDS = JSON.parse(readFileSync(new URL('../../server/http/openapi.json', import.meta.url))).components.schemas
+  .TuneRequest.properties.oscillation['x-damping-ratio'];
 const tune = (request) => JSON.parse(execFileSync(softtune, ['tune', '--request', '-'], { input: JSON.stringify(request), encoding: 'utf8' }));
 
 // The page's defaults, as index.html writes them (readForm needs a DOM; these are its values).
@@ -14,17 +20,19 @@ const DEFAULTS = {
   preset: '', body: 'mass', mass: '1', ctype: 'linear', a_static: '1', a_mass: '1', a_inertia: '', a_x: '0', a_y: '0',
   a_angle: '0', b_static: '', b_mass: '2', b_inertia: '0.5', b_x: '1', b_y: '0', b_angle: '0', anchor_a_x: '0',
   anchor_a_y: '0', anchor_b_x: '1', anchor_b_y: '0.5', axis_x: '1', axis_y: '0', frames: '12', basis: '60', osc: 'some',
-  zeta: '0.5', fps: '60', substeps: '1', mode: 'standard',
+  zeta: '0.5', fps: '60', substeps: '1', mode: 'standard', joint: '',
 };
 
 test('a query holds only what differs from the defaults and restores it', () => {
   const state = { ...DEFAULTS, frames: '24', osc: '', zeta: '0.25', mode: 'exact' };
   const query = toQuery(state, DEFAULTS);
   assert.equal(query, 'frames=24&osc=&zeta=0.25&mode=exact');
-  assert.deepEqual(fromQuery(query, DEFAULTS), state);
+  assert.deepEqual(fromQuery(query, DEFAULTS, WORDS), state);
   assert.equal(toQuery(DEFAULTS, DEFAULTS), '');
   // An oscillation word sets the fine slider; unknown keys are ignored.
-  assert.equal(fromQuery('osc=none&zeta=0.3&bogus=1', DEFAULTS).zeta, '1');
+  assert.equal(fromQuery('osc=none&zeta=0.3&bogus=1', DEFAULTS, WORDS).zeta, '1');
+  // The words are the core's damping ratios (SPEC.md 1), read from the server, not copied into the page.
+  assert.deepEqual(WORDS, { free: 0, some: 0.5, none: 1 });
   assert.ok(!('bogus' in fromQuery('bogus=1', DEFAULTS)));
 });
 
@@ -54,23 +62,37 @@ test('non-numeric text reaches the server, which names the field', () => {
     (e) => e.status === 2 && JSON.parse(e.stderr.toString()).field === 'fps');
 });
 
-test('a preset takes the page step and tuning, keeping a mode an item names itself', () => {
+test('a preset seeds the controls from its first tuned item', () => {
   const scene = {
     name: 'two', world: { fps: 60, duration_s: 3 },
     oscillators: [
       { id: 'a', effective_mass: 2, response_frames: 30, oscillation: 'some' },
       { id: 'b', effective_mass: 2, frequency_hz: 2, damping_ratio: 0.2, mode: 'exact' },
-      { id: 'c', effective_mass: 1 },
     ],
   };
-  const seeded = stateFromScene(scene);
-  assert.deepEqual(seeded, { fps: '60', substeps: '1', basis: '60', frames: '30', osc: 'some', zeta: '0.5', mode: 'standard', body: 'mass', mass: '2' });
-  const out = tunedScene(scene, { ...DEFAULTS, frames: '20', osc: '', zeta: '0.3', fps: '120', substeps: '2' });
-  assert.deepEqual(out.world, { fps: 120, duration_s: 3, substeps: 2 });
-  assert.deepEqual(out.oscillators[0], { id: 'a', effective_mass: 2, response_frames: 20, basis_fps: 60, damping_ratio: 0.3, mode: 'standard' });
-  assert.equal(out.oscillators[1].mode, 'exact');
-  assert.equal(out.oscillators[1].response_frames, 20);
-  assert.ok(!('frequency_hz' in out.oscillators[1]));
-  assert.deepEqual(out.oscillators[2], { id: 'c', effective_mass: 1 });
-  assert.equal(scene.oscillators[0].response_frames, 30, 'the preset itself is untouched');
+  assert.deepEqual(stateFromScene(scene, WORDS), { fps: '60', substeps: '1', basis: '60', frames: '30', osc: 'some', zeta: '0.5', mode: 'standard', body: 'mass', mass: '2' });
+});
+
+test('the page tunes a preset by name: `softtune simulate --request` gives its joints the page tuning', () => {
+  // 40 frames at 60 fps (1.5 Hz), some oscillation, exact mode, 120 fps with 2 substeps, on the vehicle.
+  const state = { ...DEFAULTS, preset: 'vehicle', frames: '40', mode: 'exact', fps: '120', substeps: '2' };
+  const request = presetRequest(state);
+  assert.deepEqual(request, { preset: 'vehicle', tuning: { fps: 120, substeps: 2, response_frames: 40, basis_fps: 60, mode: 'exact', oscillation: 'some' } });
+  const out = simulate(request);
+  assert.equal(out.fps, 120);
+  for (const j of out.joints.filter((x) => x.tuned)) {
+    assert.equal(j.requested.frequency_hz, 1.5, j.id);
+    assert.equal(j.requested.damping_ratio, 0.5, j.id);
+  }
+  // Exact mode on its own mass: the joint's k is k' of the tune answer for that mass at h = 1 / 240.
+  const j = out.joints.find((x) => x.tuned);
+  const t = tune({ fps: 120, substeps: 2, response_frames: 40, basis_fps: 60, mode: 'exact', oscillation: 'some', effective_mass: j.model_mass });
+  assert.ok(Math.abs(j.stiffness - t.k) <= 1e-9 * t.k, `${j.stiffness} vs ${t.k}`);
+});
+
+test('a preview covers its whole duration at up to the playback rate, within the frame cap', () => {
+  assert.equal(previewFrames(6, 30), 181);
+  assert.equal(previewFrames(2, 30), 61);
+  assert.equal(previewFrames(100, 60), 600);
+  assert.equal(previewFrames(0, 30), 2);
 });

@@ -15,14 +15,31 @@
 // linear in (x1, x2, v1, v2, Lambda1, Lambda2): its 6x6 matrix predicts stability, a simulation confirms it.
 // (Without warm starting the Lambda columns are zero, so the matrix has the 4x4 motion's eigenvalues plus
 // zeros.)
+//
+// The same loop, with the knobs below, is each engine's solver on this chain (chain_solvers.h): substeps
+// (softness at h / substeps, warm start, sweeps, x += h v, relax sweeps, per substep: Box2D v3's b2SolverStep,
+// Rapier's substeps, Jolt's collision steps), relax sweeps after the position update (Box2D v3's relax
+// stage on the moved bodies; Rapier's stabilization pass on the substep's own right-hand side), the joint
+// order (Box2D v3's graph colouring solves the link-weight joint first), impulses carried between
+// substeps of one step even without warm starting (Box2D v3 zeroes them once per step), and a velocity
+// scale per substep (Jolt's linear damping). The defaults are Box2D 2.4's step.
 
 #include <Eigen/Core>
+#include <array>
+#include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "softtune/discrete_analysis.h"
+#include "softtune/stability_limit.h"
 
 namespace softtune {
+
+/// The engines whose solver the chain models (chain_solvers.h).
+enum class ChainSolver { box2d_v2_4, box2d_v3, jolt, rapier };
+inline constexpr std::array<ChainSolver, 4> kAllChainSolvers = {ChainSolver::box2d_v2_4, ChainSolver::box2d_v3,
+                                                                ChainSolver::jolt, ChainSolver::rapier};
 
 struct ChainModel {
   double link_mass = 1.0;     ///< m1, kg
@@ -32,6 +49,12 @@ struct ChainModel {
   double damping_ratio = 0.0;
   double h = 1.0 / 60.0;      ///< s
   bool warm_start = false;    ///< start each step from last step's accumulated impulses
+  int substeps = 1;           ///< substeps per step; softness at h / substeps
+  int relax_iterations = 0;   ///< Gauss-Seidel sweeps after the position update, per substep
+  bool relax_uses_new_positions = true;  ///< relax sweeps read C from the moved bodies (else the substep's)
+  bool weight_joint_first = false;       ///< sweep joint 2 (link-weight) before joint 1 (ground-link)
+  bool substeps_carry_impulses = false;  ///< impulses carried and re-applied between substeps of a step
+  double linear_damping = 0.0;           ///< 1/s; v *= max(0, 1 - linear_damping h_sub) per substep (Jolt)
 };
 
 /// (x1, x2, v1, v2, Lambda1, Lambda2): m, m, m/s, m/s, N s, N s.
@@ -48,8 +71,11 @@ ChainMatrix chain_step_matrix(const ChainModel& model);
 double chain_spectral_radius(const ChainMatrix& a);
 
 struct ChainCase {
+  ChainSolver solver = ChainSolver::box2d_v2_4;
+  int count = 1;                 ///< the solver's chain_count_name (iterations or substeps)
   double mass_ratio = 1.0;
-  int iterations = 1;
+  int iterations = 1;            ///< Gauss-Seidel sweeps per substep (before the position update)
+  int substeps = 1;
   bool warm_start = false;
   double frequency_ratio = 0.0;  ///< f h
   double damping_ratio = 0.0;
@@ -63,24 +89,40 @@ struct ChainCase {
 ChainCase run_chain_case(const ChainModel& model, int observe_steps);
 
 struct ChainSweepSettings {
+  std::vector<ChainSolver> solvers{kAllChainSolvers.begin(), kAllChainSolvers.end()};
   std::vector<double> mass_ratios = {1, 10, 100, 1e3, 1e4, 1e5, 1e6};
-  std::vector<int> iterations = {1, 2, 4, 8, 16};
+  std::vector<int> iterations = {1, 2, 4, 8, 16};  ///< each solver's count (chain_count_name)
   std::vector<bool> warm_start = {false, true};
   std::vector<double> frequency_ratios;  ///< f h, ascending; default: 16 log-spaced from 0.001 to 2
   double damping_ratio = 0.0;
   double h = 1.0 / 60.0;  ///< s
   int observe_steps = 1000;
+  /// false: the grid-only answer (the last scan point before the first unstable one, no bisection and no
+  /// confirmation), the benchmark's baseline.
+  bool bisect = true;
 };
 ChainSweepSettings default_chain_sweep_settings();
 
-/// Per (mass ratio, iterations): the highest f h below which every scanned frequency is predicted not
-/// unstable; empty when even the lowest one is unstable.
+/// Per (solver, mass ratio, count, warm start): the highest stable f h, found by bracketing on the scan
+/// and bisecting to kLimitRelativeTolerance (stability_limit.h), then confirmed by simulating the bracket's
+/// two sides: the stable side must not be observed unstable, the unstable side must be.
 struct ChainLimit {
+  ChainSolver solver = ChainSolver::box2d_v2_4;
+  int count = 1;       ///< the solver's chain_count_name
   double mass_ratio = 1.0;
-  int iterations = 1;
+  int iterations = 1;  ///< Gauss-Seidel sweeps per substep
+  int substeps = 1;
   bool warm_start = false;
+  LimitKind kind = LimitKind::none_in_range;
+  /// The bracket's stable side (the limit); when no limit is in range, the highest scanned f h; empty when
+  /// even the lowest scanned f h is unstable.
   std::optional<double> highest_stable_frequency_ratio;
   std::optional<double> highest_stable_frequency_hz;  ///< at the settings' h
+  std::optional<double> lowest_unstable_frequency_ratio;  ///< the bracket's unstable side
+  std::optional<double> scan_highest_stable_frequency_ratio;  ///< the grid-only answer, for comparison
+  double stable_side_radius = 0.0, unstable_side_radius = 0.0;
+  std::optional<Verdict> observed_stable_side, observed_unstable_side;  ///< simulated at each side
+  bool confirmed = true;  ///< the simulation agrees on both sides (true when there is nothing to confirm)
   bool stable_over_whole_scan = false;
 };
 
@@ -88,8 +130,22 @@ struct ChainSweepResult {
   std::vector<ChainCase> cases;
   std::vector<ChainLimit> limits;
   std::size_t mismatches = 0;  ///< observed != predicted
+  std::size_t unconfirmed_limits = 0;  ///< limits whose bracket sides the simulation contradicts
 };
 
 ChainSweepResult run_chain_sweep(const ChainSweepSettings& settings);
+
+/// One limit: `solver` with `count` and warm starting, at mass ratio and zeta, step h; bracketed on the
+/// ascending f h `scan` (when `scan_radii` is given, the spectral radii already computed at the scan's
+/// points), bisected, and confirmed by `observe_steps`-step simulations of both sides.
+ChainLimit find_chain_limit(ChainSolver solver, int count, bool warm_start, double mass_ratio, double zeta,
+                            double h, std::span<const double> scan, int observe_steps,
+                            std::span<const double> scan_radii = {});
+
+/// The same for any chain: `model_at(f h)` builds the model at a frequency ratio (its h is the step). The
+/// limit's solver and count fields are left for the caller.
+using ChainModelAt = std::function<ChainModel(double frequency_ratio)>;
+ChainLimit find_chain_limit(const ChainModelAt& model_at, std::span<const double> scan, int observe_steps,
+                            std::span<const double> scan_radii = {});
 
 }  // namespace softtune

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "softtune/discrete_analysis.h"
+#include "softtune/stability_limit.h"
 
 namespace softtune {
 
@@ -53,6 +54,7 @@ struct SweepSettings {
   std::vector<double> steps;             ///< h values, s
   double max_stiffness = 1e12;           ///< N/m; frequency_ratio cases above it are not run
   int observe_steps = 1000;              ///< N, at least 1000
+  bool step_limits = true;               ///< bisect each method's largest stable omega h (StepLimit)
 };
 
 /// The default sweep (docs/accuracy-and-stability.md): f h from 0.001 to 2, zeta in {0, 1e-3, 0.1, 0.5,
@@ -68,10 +70,28 @@ struct SweepSummary {
   std::size_t non_finite_values = 0;  ///< cases whose parameters or prediction are not finite (must be 0)
 };
 
+/// Per method and damping ratio: the largest stable omega h, bisected on the step matrix's spectral radius
+/// (stability_limit.h) over kStepLimitScan, beside the closed form where one exists (max_stable_step).
+/// omega h is the only parameter: each method's step matrix depends on omega h and zeta alone.
+struct StepLimit {
+  Method method = Method::soft;
+  double damping_ratio = 0.0;
+  StabilityLimit omega_h;                  ///< the bracket, in omega h (rad)
+  std::optional<double> closed_form_omega_h;  ///< omega h_max from the Jury conditions; empty: none
+};
+
+/// The omega h range the step limits search: 1e-6 to 1e6 rad, 4 points per decade.
+inline constexpr double kStepLimitLowest = 1e-6, kStepLimitHighest = 1e6;
+inline constexpr int kStepLimitScanPoints = 49;
+
 struct SweepResult {
   std::vector<SweepCase> cases;
   SweepSummary summary;
+  std::vector<StepLimit> step_limits;  ///< methods x damping ratios of the settings
 };
+
+/// The largest stable omega h of one method at one damping ratio (see StepLimit).
+StepLimit find_step_limit(Method m, double damping_ratio);
 
 /// Predicts and observes one case. `c` carries the method and parameters; the rest is filled in.
 SweepCase run_sweep_case(SweepCase c, int observe_steps);

@@ -6,6 +6,7 @@
 #include <optional>
 #include <variant>
 
+#include "softtune/chain_design.h"
 #include "softtune/designer.h"
 #include "softtune/diagnostics.h"
 #include "softtune/discrete_analysis.h"
@@ -35,6 +36,8 @@ struct TuneRequest {
   /// Per modelled engine (indexed like engines::engine_models()), the settings its model assumes; a
   /// missing or empty entry means the engine's defaults. Values within each SettingSpec's range.
   std::vector<engines::SettingValues> engine_settings;
+  /// A mass-ratio chain to answer for (chain_design.h, tune_chain.h); empty: none.
+  std::optional<ChainAsk> chain;
 };
 
 struct TuneResult {
@@ -58,6 +61,8 @@ struct TuneResult {
   /// Per modelled engine (indexed like engines::engine_models()): its settings, what to type, what it
   /// will do, and what to type so it does what was asked.
   std::vector<engines::EngineReport> engine_reports;
+  /// Per solver of request.chain: the chain's limit with the request's settings and the fewest counts.
+  std::vector<ChainDesign> chain;
   Warnings warnings;
   StageList stages;
 };

@@ -80,6 +80,7 @@ struct Preview {
 
 struct PreviewProgress {
   int done = 0;   ///< frames rendered and encoded
+  int ready = 0;  ///< frames 0..ready-1 are encoded and can be served while the rest render (streaming)
   int total = 0;
   bool finished = false;
   bool failed = false;
@@ -98,6 +99,9 @@ class PreviewJob {
   std::shared_ptr<const Preview> wait() const;
   /// Waits at most `timeout_ms`; true when finished.
   bool wait_for(int timeout_ms) const;
+  /// PNG bytes of frame n as soon as that frame is encoded, while the others still render (a client
+  /// shows the first frame at once); nullopt before then, for an unknown frame, or after a failure.
+  std::optional<std::string> frame_png(int n) const;
 
  private:
   std::shared_ptr<JobState> state_;

@@ -22,4 +22,5 @@ inline constexpr double kMaxSpeed = 1.0e4;               ///< m/s
 inline constexpr double kMaxAngularSpeed = 1.0e3;        ///< rad/s
 inline constexpr std::size_t kMaxBodies = 500, kMaxJoints = 500, kMaxOscillators = 16, kMaxProbes = 64;
 inline constexpr std::size_t kMaxIdLength = 64;
+inline constexpr std::size_t kMaxRates = 16;             ///< entries of rates.fps, rates.substeps and an expectation's fps, substeps
 }  // namespace softtune::scene::limits

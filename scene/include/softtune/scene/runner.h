@@ -27,6 +27,7 @@ struct ProbeResult {
   std::optional<double> requested_damping_ratio;
   ResponseFit measured;                          ///< fit over the probe's window
   std::optional<int> settle_frames;              ///< frames from the window start
+  std::optional<double> settle_s;                ///< s, settle_frames / fps
   std::optional<double> frequency_error;         ///< f_measured / f_requested - 1
   std::optional<double> damping_ratio_error;     ///< zeta_measured - zeta_requested
   std::optional<double> predicted_frequency_hz;  ///< Hz, what k on the true m_eff gives (joint probes)

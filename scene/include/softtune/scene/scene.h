@@ -114,11 +114,12 @@ enum class Metric {
   measured_frequency_hz,
   measured_damping_ratio,
   overshoot,
-  settle_frames,          ///< a probe that never settles fails any bound on it
+  settle_frames,          ///< frames at the rate being run; a probe that never settles fails any bound on it
   max_abs_value,          ///< max |value| over the window (blow-up: units of the probe)
   max_constraint_error,   ///< m, scene-wide largest rigid-joint error
   finite,                 ///< scene-wide: no NaN or infinity anywhere (bounds ignored)
   in_world,               ///< scene-wide: every body stays inside world.bounds (bounds ignored)
+  settle_s,               ///< s, settle_frames / fps: the same bound at every frame rate a preset ships at
 };
 
 struct Expectation {
@@ -128,6 +129,17 @@ struct Expectation {
   std::optional<double> max;
   std::optional<MassModel> mass_model;     ///< checked on a run with this mass model (default: the scene's)
   std::string note;                        ///< why the bound is what it is (shown by `softtune check`)
+  /// Checked only at these frame rates (Hz) / substep counts; empty: at every rate. A bound that holds at one
+  /// rate only (implicit Euler's 5.4 % at 60 fps) says so here, so `softtune check --fps` can run the others.
+  std::vector<double> at_fps;
+  std::vector<int> at_substeps;
+};
+
+/// The rates a preset ships at (`rates` in its JSON): `softtune check` runs it at every fps x substeps pair.
+/// Empty lists: the world's own fps / substeps.
+struct ShipRates {
+  std::vector<double> fps;                 ///< Hz
+  std::vector<int> substeps;
 };
 
 struct WorldSettings {
@@ -157,11 +169,15 @@ struct Scene {
   std::vector<OscillatorSettings> oscillators;
   std::vector<ProbeSettings> probes;
   std::vector<Expectation> expectations;
+  ShipRates rates;
 };
 
 /// Ranges and references (ids that exist, kinds that fit); the first violation with its dotted path
 /// ("joints.2.body_a"), or nothing. Designer fields are checked by validate_tune_request at run time.
 std::optional<FieldError> validate_scene(const Scene& scene);
+
+/// Whether expectation `e` is checked at the world's fps and substeps (its at_fps / at_substeps lists).
+bool applies_at(const Expectation& e, const WorldSettings& world);
 
 /// Number of frames a scene runs: round(duration_s fps).
 int frame_count(const WorldSettings& world);

@@ -1,0 +1,117 @@
+#include "app/check_request.h"
+
+#include <algorithm>
+#include <set>
+
+#include "app/check_cost.h"
+#include "app/check_junit.h"
+#include "app/preset_store.h"
+#include "codec/list_reader.h"
+#include "codec/problem.h"
+#include "softtune/scene/limits.h"
+#include "softtune/validation.h"
+
+namespace softtune::app {
+
+using namespace softtune::codec;  // the codec is this layer's JSON vocabulary
+using nlohmann::json;
+
+namespace {
+
+std::optional<int> whole_number(const std::string& s) {
+  if (s.empty() || s.size() > 6 || s.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+  return std::stoi(s);
+}
+
+}  // namespace
+
+Shard parse_shard(const std::string& text, const std::string& field) {
+  const auto slash = text.find('/');
+  const std::string rule = "must be I/N: this runner's shard I of N, 1 <= I <= N <= " + std::to_string(kMaxShards) + ", got \"" + text + "\"";
+  if (slash == std::string::npos) throw invalid_field(field, rule);
+  const auto i = whole_number(text.substr(0, slash)), n = whole_number(text.substr(slash + 1));
+  if (!i || !n || *i < 1 || *n < 1 || *i > *n || *n > kMaxShards) throw invalid_field(field, rule);
+  return {*i, *n};
+}
+
+void read_check_options(ObjectReader& r, CheckOptions& options) {
+  if (auto v = read_number_list(r, "fps", scene::limits::kMaxRates, softtune::limits::kMinFps, scene::limits::kMaxSceneFps, "Hz")) options.fps = *v;
+  if (auto v = read_integer_list(r, "substeps", scene::limits::kMaxRates, 1, scene::limits::kMaxSceneSubsteps)) options.substeps = *v;
+  if (auto s = r.string("shard")) options.shard = parse_shard(*s, r.field("shard"));
+}
+
+CheckAnswer run_check_request(const json& request, const std::string& presets_dir) {
+  ObjectReader r = read_object(request, "");
+  CheckOptions options;
+  read_check_options(r, options);
+  CheckAnswer answer;
+  if (auto f = r.choice("format", {"json", "junit"})) answer.junit = *f == 1;
+
+  std::vector<CheckInput> inputs;
+  std::set<std::string> names;
+  if (const json* list = r.raw("presets")) {
+    if (!list->is_array() || list->empty() || list->size() > kMaxCheckPresets) {
+      throw invalid_field("presets", "must be an array of 1 to " + std::to_string(kMaxCheckPresets) + " preset names");
+    }
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const std::string field = "presets." + std::to_string(i);
+      if (!(*list)[i].is_string()) throw invalid_field(field, "must be a preset name (see GET /api/v1/presets)");
+      const std::string name = (*list)[i];
+      if (!names.insert(name).second) throw invalid_field(field, "names \"" + name + "\" twice");
+      try {
+        inputs.push_back({name, load_preset(presets_dir, name), std::nullopt});
+      } catch (const Problem& p) {
+        throw Problem(p.status, p.title, field, p.detail);  // a name the caller typed: bad input, not a failed case
+      }
+    }
+  }
+  if (const json* list = r.raw("scenes")) {
+    if (!list->is_array() || list->empty() || list->size() > kMaxCheckScenes) {
+      throw invalid_field("scenes", "must be an array of 1 to " + std::to_string(kMaxCheckScenes) + " scenes");
+    }
+    const json schema = load_schema(presets_dir);
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const std::string field = "scenes." + std::to_string(i);
+      const json& doc = (*list)[i];
+      if (!doc.is_object()) throw invalid_field(field, "must be a JSON object (a scene, as in presets/*.json)");
+      try {
+        validate_preset(doc, schema, field);
+      } catch (const Problem& p) {
+        std::string pointer = p.field;  // the schema's JSON pointer ("/world/fps") as a dotted path
+        std::replace(pointer.begin(), pointer.end(), '/', '.');
+        throw Problem(p.status, p.title, field + pointer, p.detail);
+      }
+      const std::string name = doc.at("name");
+      if (!names.insert(name).second) throw invalid_field(field + ".name", "\"" + name + "\" is the name of another preset or scene");
+      inputs.push_back({name, doc, std::nullopt});
+    }
+  }
+  if (!r.has("presets") && !r.has("scenes")) {
+    for (const std::string& name : list_presets(presets_dir)) {
+      CheckInput in{name, json(), std::nullopt};
+      try {
+        in.document = load_preset(presets_dir, name);
+      } catch (const Problem& p) {
+        in.problem = problem_json(p);
+      }
+      inputs.push_back(std::move(in));
+    }
+  }
+  Baseline baseline;
+  if (const json* b = r.raw("baseline")) {
+    baseline = decode_baseline(*b, "baseline");
+    options.baseline = &baseline;
+  }
+  r.finish();
+
+  require_check_budget(check_work(inputs, options), kMaxCheckWork, "presets, scenes, fps, substeps");
+  const CheckReport report = run_checks(inputs, options);
+  if (answer.junit) {
+    answer.xml = junit_xml(report);
+  } else {
+    answer.json = check_report_json(report);
+  }
+  return answer;
+}
+
+}  // namespace softtune::app
