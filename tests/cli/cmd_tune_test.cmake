@@ -1,13 +1,6 @@
 # Runs `softtune tune` as a user would and checks exit codes, stdout JSON and the stderr problem.
 # Usage: cmake -DSOFTTUNE=path/to/softtune -P tune_cli_test.cmake
-function(expect_run expected_code)
-  execute_process(COMMAND ${SOFTTUNE} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL expected_code)
-    message(FATAL_ERROR "softtune ${ARGN}: exit ${code}, wanted ${expected_code}\n${out}\n${err}")
-  endif()
-  set(out "${out}" PARENT_SCOPE)
-  set(err "${err}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
 
 expect_run(0 tune --frames 12 --oscillation some --mass 2 --fps 60 --mode exact)
 string(JSON f GET "${out}" achieved frequency_hz)

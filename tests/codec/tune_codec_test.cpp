@@ -7,7 +7,6 @@
 #include <cmath>
 #include <functional>
 
-#include "codec/json_reader.h"
 #include "codec/problem.h"
 
 using nlohmann::json;
@@ -143,26 +142,4 @@ TEST(TuneCodec, ChainAnswersPerSolverAndNamesBadFields) {
   EXPECT_EQ(with([](json& d) { d["chain"] = {{"mass_ratio", 10}, {"solvers", {"ode"}}}; }),
             std::make_pair(422, std::string("chain.solvers[0]")));
   EXPECT_EQ(with([](json& d) { d["chain"] = {{"mass_ratio", 10}, {"links", 3}}; }), std::make_pair(422, std::string("chain.links")));
-}
-
-TEST(JsonReader, RefusesMalformedDeepAndDuplicated) {
-  EXPECT_THROW(parse_json("{\"a\": 1,"), Problem);
-  EXPECT_THROW(parse_json("{\"fps\": 60, \"fps\": 30}"), Problem);
-  std::string deep(100, '[');
-  deep += std::string(100, ']');
-  try {
-    parse_json(deep);
-    FAIL();
-  } catch (const Problem& p) {
-    EXPECT_EQ(p.status, 400);
-  }
-  EXPECT_NO_THROW(parse_json(std::string(20, '[') + std::string(20, ']')));
-  // Huge exponents overflow a double: well-formed JSON, a value out of range (422) naming the field.
-  try {
-    parse_json(R"({"oscillation": "some", "response_frames": 1e999, "effective_mass": 1})");
-    FAIL();
-  } catch (const Problem& p) {
-    EXPECT_EQ(p.status, 422);
-    EXPECT_EQ(p.field, "response_frames");
-  }
 }

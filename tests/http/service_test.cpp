@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "codec/problem.h"
-#include "http/routes.h"
+#include "handler_requests.h"
 
 using nlohmann::json;
 using softtune::http::HttpRequest;
@@ -13,13 +13,7 @@ using softtune::http::Service;
 
 namespace {
 
-HttpRequest request(std::string method, std::string path, std::string body = "") {
-  HttpRequest r;
-  r.method = std::move(method);
-  r.path = std::move(path);
-  r.body = std::move(body);
-  return r;
-}
+using softtune::http::test::request;
 
 Service throwing_service() {
   std::vector<Route> routes = {
@@ -65,21 +59,4 @@ TEST(Service, RouteLabelsAreThePatterns) {
   Service s = throwing_service();
   EXPECT_EQ(s.route_label("GET", "/echo/abc"), "/echo/{name}");
   EXPECT_EQ(s.route_label("GET", "/nothing"), "unmatched");
-}
-
-TEST(Service, TuneRunsTheSharedContract) {
-  Service s({}, softtune::http::service_routes());
-  // 60 Hz steps, 12 frames per period: f = 60 / 12 = 5 Hz; k = m omega^2 = 2 (10 pi)^2 in standard mode.
-  const HttpResponse ok =
-      s.handle(request("POST", "/api/v1/tune", R"({"response_frames": 12, "oscillation": "free", "effective_mass": 2})"));
-  ASSERT_EQ(ok.status, 200) << ok.body;
-  const json doc = json::parse(ok.body);
-  EXPECT_NEAR(doc["frequency_hz"].get<double>(), 5.0, 1e-12);
-  EXPECT_NEAR(doc["k"].get<double>(), 2.0 * 100.0 * M_PI * M_PI, 1e-9);
-
-  const HttpResponse bad = s.handle(request("POST", "/api/v1/tune", R"({"response_frames": 12, "oscillation": "free"})"));
-  EXPECT_EQ(bad.status, 422);
-  EXPECT_EQ(json::parse(bad.body)["field"], "effective_mass");
-  EXPECT_EQ(s.handle(request("POST", "/api/v1/tune", R"({"fps": 60,)")).status, 400);
-  EXPECT_EQ(s.handle(request("POST", "/api/v1/tune", R"({"fps": 60, "fps": 30})")).status, 400);
 }

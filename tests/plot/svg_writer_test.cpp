@@ -5,8 +5,6 @@
 
 #include <cmath>
 
-#include "plot/csv_writer.h"
-
 namespace softtune::plot {
 namespace {
 
@@ -46,10 +44,6 @@ TEST(SvgWriter, StacksPanels) {
   const std::vector<Plot> plots(3, Plot{"p", make_axis("x", ""), make_axis("y", ""), {}, {}});
   const std::string svg = render_svg(plots);
   EXPECT_NE(svg.find("height=\"" + std::to_string(3 * kPanelHeight) + "\""), std::string::npos);
-}
-
-TEST(CsvWriter, QuotesWhatNeedsIt) {
-  EXPECT_EQ(render_csv({"a", "b"}, {{"1", "x,y"}, {"say \"hi\"", ""}}), "a,b\r\n1,\"x,y\"\r\n\"say \"\"hi\"\"\",\r\n");
 }
 
 }  // namespace

@@ -67,11 +67,5 @@ TEST(Tessellate, TextIsNotInTheMesh) {
   EXPECT_EQ(with.vertices.size(), without.vertices.size());
 }
 
-TEST(Font, LowerCaseIsUpperCaseAndUnknownIsQuestionMark) {
-  EXPECT_EQ(glyph_rows('a'), glyph_rows('A'));
-  EXPECT_EQ(glyph_rows('~'), glyph_rows('?'));
-  EXPECT_NE(glyph_rows('0'), glyph_rows('O'));
-}
-
 }  // namespace
 }  // namespace softtune::render

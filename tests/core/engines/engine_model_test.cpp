@@ -100,21 +100,5 @@ TEST(SolveResponse, ReportsTheNearestWhenTheTargetCannotBeMet) {
   EXPECT_NEAR(s.frequency_error, 0.0, 1e-3);
 }
 
-TEST(EngineRegistry, EveryModelIsFoundByNameAndHasValidDefaults) {
-  ASSERT_FALSE(engine_models().empty());
-  for (const EngineModel* model : engine_models()) {
-    EXPECT_EQ(find_engine_model(model->name), model);
-    EXPECT_FALSE(model->modelled.empty()) << model->name;
-    for (const SettingSpec& spec : model->settings) {
-      EXPECT_LE(spec.min, spec.default_value) << model->name << "." << spec.name;
-      EXPECT_LE(spec.default_value, spec.max) << model->name << "." << spec.name;
-      if (!spec.choices.empty()) {
-        EXPECT_EQ(spec.max, static_cast<double>(spec.choices.size() - 1));
-      }
-    }
-  }
-  EXPECT_EQ(find_engine_model("no_such_engine"), nullptr);
-}
-
 }  // namespace
 }  // namespace softtune::engines

@@ -1,0 +1,41 @@
+# Runs `softtune accuracy` (server/cli/cmd_accuracy.cpp) as a user would: --step-rates 30,60 is the grid
+# (the request's fps joins it), --no-box2d leaves the Box2D row out, csv has its header, and bad flags exit 2
+# naming the field ("30,,60" has an empty rate).
+# Usage: cmake -DSOFTTUNE=path/to/softtune -DWORK=scratch/dir -P cmd_accuracy_test.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
+
+set(tune --frequency 10 --oscillation free --mass 1 --fps 60)
+expect_run(0 accuracy ${tune} --step-rates 30,60 --no-box2d)
+string(JSON rows LENGTH "${out}" rows)
+math(EXPR last "${rows} - 1")
+set(rates "")
+foreach(i RANGE ${last})
+  string(JSON method GET "${out}" rows ${i} method)
+  string(JSON fps GET "${out}" rows ${i} fps)
+  if(method STREQUAL "box2d_distance_joint")
+    message(FATAL_ERROR "--no-box2d still has a Box2D row")
+  endif()
+  if(fps EQUAL 30)
+    set(at_30 TRUE)
+  elseif(fps EQUAL 60)
+    set(at_60 TRUE)
+  else()
+    message(FATAL_ERROR "a row at ${fps} fps, wanted only 30 and 60")
+  endif()
+endforeach()
+if(NOT at_30 OR NOT at_60)
+  message(FATAL_ERROR "no rows at 30 or at 60 fps")
+endif()
+string(JSON budget GET "${out}" error_budget)
+expect_between(error_budget "${budget}" 0.05 0.05)
+
+expect_run(0 accuracy ${tune} --step-rates 60 --no-box2d --format csv)
+if(NOT out MATCHES "^method,fps,substeps,")
+  message(FATAL_ERROR "csv header missing:\n${out}")
+endif()
+
+expect_problem(--step-rates accuracy ${tune} --step-rates 30,,60)
+expect_problem(--format accuracy ${tune} --format xml)
+file(MAKE_DIRECTORY ${WORK})
+file(WRITE ${WORK}/accuracy.json [[{"frequency_hz": 10, "oscillation": "free", "effective_mass": 1}]])
+expect_problem(--request accuracy --request ${WORK}/accuracy.json --mass 2)
