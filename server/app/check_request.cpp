@@ -77,9 +77,11 @@ CheckAnswer run_check_request(const json& request, const std::string& presets_di
       try {
         validate_preset(doc, schema, field);
       } catch (const Problem& p) {
-        std::string pointer = p.field;  // the schema's JSON pointer ("/world/fps") as a dotted path
-        std::replace(pointer.begin(), pointer.end(), '/', '.');
-        throw Problem(p.status, p.title, field + pointer, p.detail);
+        // The schema names the field as a dotted path within the scene ("world.fps"): put it under the scene's.
+        std::string inner = p.field;
+        std::replace(inner.begin(), inner.end(), '/', '.');
+        if (!inner.empty() && inner.front() == '.') inner.erase(0, 1);
+        throw Problem(p.status, p.title, inner.empty() ? field : field + "." + inner, p.detail);
       }
       const std::string name = doc.at("name");
       if (!names.insert(name).second) throw invalid_field(field + ".name", "\"" + name + "\" is the name of another preset or scene");

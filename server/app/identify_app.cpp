@@ -50,7 +50,7 @@ nlohmann::json run_identify(const nlohmann::json& request) {
       const codec::PreviousRound& p = q.previous[i];
       const auto measured = p.measured ? p.measured : measured_response(identify(p.recording->recording));
       if (!measured) {
-        throw codec::invalid_field("previous[" + std::to_string(i) + "]",
+        throw codec::invalid_field("previous." + std::to_string(i),
                                    "could not be identified (no frequency and damping ratio): send its measured values");
       }
       rounds.push_back({typed_response(p.typed, o.effective_mass), *measured});

@@ -72,6 +72,17 @@ void apply_scene_tuning(json& scene_doc, const json& tuning) {
       if (item.is_object() && is_designer_tuned(item)) retune(item, designer, mode, keep_own_mode);
     }
   }
+  // A scene tuned by its modes (modal_tuning, docs/scenes.md): its targets ask what the designer asks, and
+  // the solve takes the page's standard | exact (a target's own "mode" names its motion, and stays).
+  if (scene_doc.contains("modal_tuning") && scene_doc["modal_tuning"].is_object()) {
+    json& modal = scene_doc["modal_tuning"];
+    if (mode) modal["mode"] = *mode;
+    if (modal.contains("targets") && modal["targets"].is_array()) {
+      for (json& target : modal["targets"]) {
+        if (target.is_object()) retune(target, designer, nullptr, false);
+      }
+    }
+  }
 }
 
 }  // namespace softtune::app

@@ -73,7 +73,7 @@ NamedRecording read_csv_recording(std::string_view text, const std::string& fiel
       throw invalid_field(field, "must hold at most 400000 values (rows x probe columns)");
     }
     const std::vector<std::string_view> cells = split(line, separator);
-    const std::string where = field + ".rows[" + std::to_string(row) + "]";
+    const std::string where = field + ".rows." + std::to_string(row);
     if (cells.size() != names.size()) {
       throw invalid_field(where, "line " + std::to_string(line_number) + " has " + std::to_string(cells.size()) +
                                      " fields where the header names " + std::to_string(names.size()));
@@ -91,7 +91,7 @@ NamedRecording read_csv_recording(std::string_view text, const std::string& fiel
   if (names.empty()) throw invalid_field(field, "must start with a header row naming the columns (time first)");
   if (auto e = validate_recording(out.recording)) {
     const std::size_t row = std::min(e->row, out.recording.time_s.size());
-    throw invalid_field(field + ".rows[" + std::to_string(row) + "]." + names[std::min(e->column, names.size() - 1)],
+    throw invalid_field(field + ".rows." + std::to_string(row) + "." + names[std::min(e->column, names.size() - 1)],
                         "column " + quote_text(names[std::min(e->column, names.size() - 1)]) + " " + std::string(e->rule));
   }
   out.time_name = names.front();

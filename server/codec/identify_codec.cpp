@@ -22,7 +22,7 @@ std::vector<double> read_samples(const json& v, const std::string& field) {
   std::vector<double> out;
   out.reserve(v.size());
   for (std::size_t i = 0; i < v.size(); ++i) {
-    if (!v[i].is_number()) throw invalid_field(field + "[" + std::to_string(i) + "]", "must be a finite number");
+    if (!v[i].is_number()) throw invalid_field(field + "." + std::to_string(i), "must be a finite number");
     out.push_back(v[i].get<double>());
   }
   return out;
@@ -52,7 +52,7 @@ NamedRecording read_recording(ObjectReader& r) {
   if (auto e = validate_recording(out.recording)) {
     const std::string column = e->column == 0 ? r.field("time_s")
                                               : r.field("probes") + "." + out.probe_names[std::min(e->column, out.probe_names.size()) - 1];
-    throw invalid_field(column + "[" + std::to_string(e->row) + "]", std::string(e->rule));
+    throw invalid_field(column + "." + std::to_string(e->row), std::string(e->rule));
   }
   return out;
 }
@@ -177,7 +177,7 @@ IdentifyRequest decode_identify_request(const json& doc) {
     if (!prev->is_array()) throw invalid_field(r.field("previous"), "must be an array of earlier rounds, oldest first");
     if (prev->size() > kIdentifyMaxPrevious) throw invalid_field(r.field("previous"), "must hold at most 4 earlier rounds");
     for (std::size_t i = 0; i < prev->size(); ++i) {
-      const std::string field = "previous[" + std::to_string(i) + "]";
+      const std::string field = "previous." + std::to_string(i);
       ObjectReader p = read_object((*prev)[i], field);
       PreviousRound round;
       if (auto m = p.object("measured")) {

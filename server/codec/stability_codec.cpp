@@ -28,7 +28,7 @@ std::optional<std::vector<ChainSolver>> read_chain_solvers(const json* v, const 
   std::vector<ChainSolver> out;
   for (std::size_t i = 0; i < v->size(); ++i) {
     const auto s = (*v)[i].is_string() ? chain_solver_from_name((*v)[i].get<std::string>()) : std::nullopt;
-    if (!s) throw invalid_field(field + "[" + std::to_string(i) + "]", rule);
+    if (!s) throw invalid_field(field + "." + std::to_string(i), rule);
     out.push_back(*s);
   }
   return out;

@@ -259,7 +259,7 @@ std::vector<LimitRow> request_rows() {
        "`core/include/softtune/identify.h` `kIdentifyMaxSamples`, `kIdentifyMaxProbes`, `kIdentifyMaxCells`; "
        "`server/codec/csv_recording.h` `kCsvMaxBytes`, `kCsvMaxNameBytes`; `server/codec/identify_codec.h` "
        "`kIdentifyMaxPrevious`, `kIdentifyMaxEngineName`",
-       "422 naming the row and column (`csv.rows[i].x`, `probes.x[i]`); the fit runs at most " +
+       "422 naming the row and column (`csv.rows.N.x`, `probes.x.N`); the fit runs at most " +
            figure(kIdentifyMaxIterations) + " Levenberg-Marquardt steps per window; `plot` strided to at most " +
            figure(codec::kIdentifyMaxPlotSamples) + " samples per probe"},
   };

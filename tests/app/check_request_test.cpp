@@ -33,8 +33,8 @@ TEST(CheckRequest, BadFieldsAreNamed) {
   EXPECT_EQ(refused_field({{"presets", {"mouse", "nope"}}}), "404 presets.1");
   EXPECT_EQ(refused_field({{"presets", {"mouse", "mouse"}}}), "422 presets.1");
   EXPECT_EQ(refused_field({{"presets", json::array()}}), "422 presets");
-  EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"fps", {60, 0}}}), "422 fps[1]");
-  EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"substeps", {1.5}}}), "422 substeps[0]");
+  EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"fps", {60, 0}}}), "422 fps.1");
+  EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"substeps", {1.5}}}), "422 substeps.0");
   EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"shard", "3/2"}}), "422 shard");
   EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"format", "xml"}}), "422 format");
   EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"baseline", {{"cases", 1}}}}), "422 baseline.softtune_baseline");

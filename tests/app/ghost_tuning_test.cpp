@@ -17,7 +17,7 @@ namespace {
 
 using nlohmann::json;
 
-scene::Scene vehicle() { return codec::decode_scene(load_preset(SOFTTUNE_PRESETS_DIR, "vehicle")); }
+scene::Scene vehicle() { return codec::decode_scene(load_preset(SOFTTUNE_PRESETS_DIR, "vehicle_per_spring")); }
 
 std::string field_of(const scene::Scene& s, const json& ghost) {
   try {

@@ -78,14 +78,14 @@ TEST(ModesApp, RefusesModalTargetsItCannotReachNamingThem) {
   t = {{"mode", "heave"}, {"body", "box_0_0"}, {"frequency_hz", 2}, {"damping_ratio", 0.5}};
   EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "modal_tuning.targets.0");
   t = {{"mode", "wobble"}, {"body", "chassis"}, {"frequency_hz", 2}, {"damping_ratio", 0.5}};
-  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "/modal_tuning/targets/0/mode");  // the schema, by JSON pointer
+  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "scene.modal_tuning.targets.0.mode");  // the schema's rule, as a dotted path
   t = {{"mode", "heave"}, {"body", "ground"}, {"frequency_hz", 2}, {"damping_ratio", 0.5}};
-  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "modal_tuning.targets.0.body");
+  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "scene.modal_tuning.targets.0.body");
   t = {{"mode", "heave"}, {"body", "chassis"}, {"damping_ratio", 0.5}};  // no frequency: the tune codec's rule
-  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "modal_tuning.targets.0.response_frames");
+  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", vehicle_with(t)}}, kPresets); }), "scene.modal_tuning.targets.0.response_frames");
   json scene = load_preset(kPresets, "vehicle");
   scene["modal_tuning"]["groups"][0]["joints"].push_back("rear_suspension");
-  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", scene}}, kPresets); }), "modal_tuning.groups.0.joints.2");
+  EXPECT_EQ(problem_field([&] { return run_simulate({{"scene", scene}}, kPresets); }), "scene.modal_tuning.groups.0.joints.2");
 }
 
 }  // namespace

@@ -243,7 +243,8 @@ TEST(SceneFrames, TextLandsInsideTheTitleBand) {
       const double band = render::kCaptionBand * size.height;
       for (std::size_t i : {std::size_t{0}, set.frames.size() - 1}) {
         const auto texts = render::layout_text_overlay(set.frames[i], render::make_view(cameras[i], size));
-        ASSERT_GE(texts.size(), 2u);
+        // The smallest size keeps the whole lines that fit (a long scene name leaves no room for the settings).
+        ASSERT_GE(texts.size(), size.width >= 360 ? 2u : 1u);
         for (const render::PlacedText& t : texts) {
           if (!t.in_band) continue;
           EXPECT_GE(t.box.left, 0) << t.text;

@@ -68,9 +68,9 @@ TEST(SceneTuning, RefusesABadTuningAtItsField) {
 // rear suspension's travel swings measurably slower.
 TEST(SceneTuning, AVehicleTunedSlowerGetsTheSoftSpringItAskedFor) {
   const std::string dir = SOFTTUNE_PRESETS_DIR;
-  const json preset = softtune::app::run_simulate({{"preset", "vehicle"}}, dir);
+  const json preset = softtune::app::run_simulate({{"preset", "vehicle_per_spring"}}, dir);
   const json tuned = softtune::app::run_simulate(
-      {{"preset", "vehicle"}, {"tuning", {{"response_frames", 40}, {"oscillation", "some"}, {"mode", "standard"}}}}, dir);
+      {{"preset", "vehicle_per_spring"}, {"tuning", {{"response_frames", 40}, {"oscillation", "some"}, {"mode", "standard"}}}}, dir);
   const double omega = 2 * M_PI * 1.5;
   for (const json& j : tuned["joints"]) {
     const double m = j["effective_mass"].get<double>();

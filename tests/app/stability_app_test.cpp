@@ -58,7 +58,7 @@ TEST(StabilityCodec, CustomSweepHasEveryField) {
   }
   EXPECT_TRUE(soft_seen);
   const json stages = out.at("stages");
-  EXPECT_NE(std::find(stages.begin(), stages.end(), "sequential_impulse_chain"), stages.end());
+  EXPECT_NE(std::find(stages.begin(), stages.end(), json("sequential_impulse_chain")), stages.end()) << stages.dump();
 }
 
 TEST(StabilityCodec, ChainCanBeLeftOut) {

@@ -26,4 +26,4 @@ expect_run(0 verify --request ${WORK}/verify.json)
 
 expect_problem(--duration verify --engines box2d_v2_4 --frequency 3 --mass 1 --oscillation some --duration long)
 expect_problem(--request verify --request ${WORK}/verify.json --mass 2)
-expect_problem(engines[0] verify --engines havok --frequency 3 --oscillation some --mass 1)
+expect_problem(engines.0 verify --engines havok --frequency 3 --oscillation some --mass 1)

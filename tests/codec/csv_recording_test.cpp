@@ -28,11 +28,11 @@ TEST(CsvRecording, ReadsNamedColumnsWithAnySeparator) {
 }
 
 TEST(CsvRecording, BadRowsAreNamedByRowAndColumn) {
-  EXPECT_EQ(refusal("t,x\n0,1\n1,nan\n"), "422 csv.rows[1].x");
-  EXPECT_EQ(refusal("t,x\n0,1\n1,1e999\n"), "422 csv.rows[1].x");
-  EXPECT_EQ(refusal("t,x\n0,1\n1\n"), "422 csv.rows[1]");
-  EXPECT_EQ(refusal("t,x\n0,1\n0,2\n"), "422 csv.rows[1].t");
-  EXPECT_EQ(refusal("t,x\n0,1\n"), "422 csv.rows[1].t");  // one row
+  EXPECT_EQ(refusal("t,x\n0,1\n1,nan\n"), "422 csv.rows.1.x");
+  EXPECT_EQ(refusal("t,x\n0,1\n1,1e999\n"), "422 csv.rows.1.x");
+  EXPECT_EQ(refusal("t,x\n0,1\n1\n"), "422 csv.rows.1");
+  EXPECT_EQ(refusal("t,x\n0,1\n0,2\n"), "422 csv.rows.1.t");
+  EXPECT_EQ(refusal("t,x\n0,1\n"), "422 csv.rows.1.t");  // one row
   EXPECT_EQ(refusal("1,2\n3,4\n"), "422 csv.header");
   EXPECT_EQ(refusal("t,x,x\n"), "422 csv.header");
   EXPECT_EQ(refusal("t\n0\n1\n"), "422 csv.header");

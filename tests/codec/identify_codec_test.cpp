@@ -38,14 +38,14 @@ TEST(IdentifyCodec, DecodesSeriesTypedAndPrevious) {
 TEST(IdentifyCodec, RefusesNamingTheField) {
   EXPECT_EQ(refusal({{"probes", {{"x", {1, 2}}}}}), "422 time_s");
   EXPECT_EQ(refusal({{"time_s", {0, 1}}, {"probes", {{"x", {1, 2}}}}, {"csv", "t,x\n"}}), "422 csv");
-  EXPECT_EQ(refusal({{"time_s", {0, 1}}, {"probes", {{"x", {1, 2, 3}}}}}), "422 probes.x[2]");
+  EXPECT_EQ(refusal({{"time_s", {0, 1}}, {"probes", {{"x", {1, 2, 3}}}}}), "422 probes.x.2");
   EXPECT_EQ(refusal({{"time_s", {0, 1}}, {"probes", json::object()}}), "422 probes");
   json bad = kSeries;
   bad["typed"] = {{"frequency_hz", -1}, {"damping_ratio", 0.5}};
   EXPECT_EQ(refusal(bad), "422 typed.frequency_hz");
   bad = kSeries;
   bad["previous"] = json::array({{{"measured", {{"frequency_hz", 4}, {"damping_ratio", 0.6}}}}});
-  EXPECT_EQ(refusal(bad), "422 previous[0].typed");
+  EXPECT_EQ(refusal(bad), "422 previous.0.typed");
   bad["previous"] = json::array({1, 2, 3, 4, 5});
   EXPECT_EQ(refusal(bad), "422 previous");
   bad = kSeries;

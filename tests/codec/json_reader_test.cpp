@@ -60,7 +60,7 @@ TEST(JsonReader, ADuplicatedKeyIsNamedByItsPath) {
   // The same key in two different objects is no duplicate.
   EXPECT_NO_THROW(parse_json(R"({"body_a": {"mass": 1}, "body_b": {"mass": 2}})"));
   // A number too large for a double inside an array is named with its index.
-  EXPECT_EQ(problem_from([] { parse_json(R"({"anchor_a": [0, 1e400]})"); }).field, "anchor_a[1]");
+  EXPECT_EQ(problem_from([] { parse_json(R"({"anchor_a": [0, 1e400]})"); }).field, "anchor_a.1");
 }
 
 TEST(ObjectReader, TypedFieldsRefuseTheWrongKindNamingThePath) {

@@ -41,14 +41,14 @@ TEST(ListReader, ReadsTheListAsGiven) {
 }
 
 TEST(ListReader, RefusesNamingTheFieldAndTheEntry) {
-  EXPECT_EQ(refused_field({30, nullptr, 60}), "step_rates[1]");
-  EXPECT_EQ(refused_field({30, "60"}), "step_rates[1]");
-  EXPECT_EQ(refused_field({0.5}), "step_rates[0]");   // below the bound
-  EXPECT_EQ(refused_field({30, 2000}), "step_rates[1]");  // above it
+  EXPECT_EQ(refused_field({30, nullptr, 60}), "step_rates.1");
+  EXPECT_EQ(refused_field({30, "60"}), "step_rates.1");
+  EXPECT_EQ(refused_field({0.5}), "step_rates.0");   // below the bound
+  EXPECT_EQ(refused_field({30, 2000}), "step_rates.1");  // above it
   EXPECT_EQ(refused_field(json::array()), "step_rates");
   EXPECT_EQ(refused_field({1, 2, 3, 4, 5}), "step_rates");  // more than 4 entries
   EXPECT_EQ(refused_field(30), "step_rates");
-  EXPECT_EQ(refused_field({1, 2.5}, true), "step_rates[1]");  // not an integer
+  EXPECT_EQ(refused_field({1, 2.5}, true), "step_rates.1");  // not an integer
   EXPECT_EQ(refused_field({1, 2}, true), "");
 }
 
@@ -59,7 +59,7 @@ TEST(ListReader, TheRuleQuotesTheBounds) {
     read_number_list(r, "step_rates", 4, 1.0, 1000.0, "Hz");
     FAIL();
   } catch (const Problem& p) {
-    EXPECT_EQ(p.field, "accuracy.step_rates[1]");
+    EXPECT_EQ(p.field, "accuracy.step_rates.1");
     EXPECT_EQ(p.detail, "must be an array of 1 to 4 finite numbers in [1, 1000] Hz");
   }
 }

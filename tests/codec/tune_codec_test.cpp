@@ -140,6 +140,6 @@ TEST(TuneCodec, ChainAnswersPerSolverAndNamesBadFields) {
   EXPECT_EQ(with([](json& d) { d["chain"] = {{"mass_ratio", 0.5}}; }), std::make_pair(422, std::string("chain.mass_ratio")));
   EXPECT_EQ(with([](json& d) { d["chain"] = {{"mass_ratio", 10}, {"margin", 11}}; }), std::make_pair(422, std::string("chain.margin")));
   EXPECT_EQ(with([](json& d) { d["chain"] = {{"mass_ratio", 10}, {"solvers", {"ode"}}}; }),
-            std::make_pair(422, std::string("chain.solvers[0]")));
+            std::make_pair(422, std::string("chain.solvers.0")));
   EXPECT_EQ(with([](json& d) { d["chain"] = {{"mass_ratio", 10}, {"links", 3}}; }), std::make_pair(422, std::string("chain.links")));
 }

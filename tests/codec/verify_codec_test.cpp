@@ -45,14 +45,14 @@ TEST(VerifyCodec, DecodesEnginesInTheOrderAsked) {
 
 TEST(VerifyCodec, RefusesEachBadEntryByIndex) {
   EXPECT_EQ(refused(with("engines", "ode")).first, "engines");
-  EXPECT_EQ(refused(with("engines", {"ode", 3})).first, "engines[1]");
+  EXPECT_EQ(refused(with("engines", {"ode", 3})).first, "engines.1");
   const auto unknown = refused(with("engines", {"havok"}));
-  EXPECT_EQ(unknown.first, "engines[0]");
+  EXPECT_EQ(unknown.first, "engines.0");
   EXPECT_NE(unknown.second.find("is not an engine"), std::string::npos) << unknown.second;
   const auto modelled = refused(with("engines", {"box2d_v3"}));  // a model in core, no engine linked
-  EXPECT_EQ(modelled.first, "engines[0]");
+  EXPECT_EQ(modelled.first, "engines.0");
   EXPECT_NE(modelled.second.find("not linked"), std::string::npos) << modelled.second;
-  EXPECT_EQ(refused(with("engines", {"ode", "ode"})).first, "engines[1]");
+  EXPECT_EQ(refused(with("engines", {"ode", "ode"})).first, "engines.1");
   EXPECT_EQ(refused(with("engines", json(std::vector<std::string>(17, "ode")))).first, "engines");
 }
 

@@ -74,10 +74,11 @@ test('a preset seeds the controls from its first tuned item', () => {
 });
 
 test('the page tunes a preset by name: `softtune simulate --request` gives its joints the page tuning', () => {
-  // 40 frames at 60 fps (1.5 Hz), some oscillation, exact mode, 120 fps with 2 substeps, on the vehicle.
-  const state = { ...DEFAULTS, preset: 'vehicle', frames: '40', mode: 'exact', fps: '120', substeps: '2' };
+  // 40 frames at 60 fps (1.5 Hz), some oscillation, exact mode, 120 fps with 2 substeps, on the vehicle tuned
+  // spring by spring (the modal vehicle solves its springs for the heave instead).
+  const state = { ...DEFAULTS, preset: 'vehicle_per_spring', frames: '40', mode: 'exact', fps: '120', substeps: '2' };
   const request = presetRequest(state);
-  assert.deepEqual(request, { preset: 'vehicle', tuning: { fps: 120, substeps: 2, response_frames: 40, basis_fps: 60, mode: 'exact', oscillation: 'some' } });
+  assert.deepEqual(request, { preset: 'vehicle_per_spring', tuning: { fps: 120, substeps: 2, response_frames: 40, basis_fps: 60, mode: 'exact', oscillation: 'some' } });
   const out = simulate(request);
   assert.equal(out.fps, 120);
   for (const j of out.joints.filter((x) => x.tuned)) {
