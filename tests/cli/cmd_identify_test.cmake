@@ -1,14 +1,7 @@
 # Runs `softtune identify` as a user would: a CSV recording of a known oscillator (4.3 Hz, zeta 0.61, written
 # by the closed form), against the request it was tuned for, from a file and from stdin; and a bad row.
 # Usage: cmake -DSOFTTUNE=path/to/softtune -DDATA=tests/cli/data -P cmd_identify_test.cmake
-function(expect_run expected_code)
-  execute_process(COMMAND ${SOFTTUNE} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL expected_code)
-    message(FATAL_ERROR "softtune ${ARGN}: exit ${code}, wanted ${expected_code}\n${out}\n${err}")
-  endif()
-  set(out "${out}" PARENT_SCOPE)
-  set(err "${err}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
 
 expect_run(0 identify --csv ${DATA}/recording_4p3hz.csv --frequency 5 --damping-ratio 0.5 --mass 2 --engine godot)
 string(JSON f GET "${out}" frequency_hz)

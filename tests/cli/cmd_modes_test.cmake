@@ -1,14 +1,7 @@
 # Runs `softtune modes` as a user would: the per-spring vehicle's heave on the docs' closed form, exit 2 and a
 # problem naming the flag's field on bad input.
 # Usage: cmake -DSOFTTUNE=path/to/softtune -DPRESETS=presets -P cmd_modes_test.cmake
-function(expect_run expected_code)
-  execute_process(COMMAND ${SOFTTUNE} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL expected_code)
-    message(FATAL_ERROR "softtune ${ARGN}: exit ${code}, wanted ${expected_code}\n${out}\n${err}")
-  endif()
-  set(out "${out}" PARENT_SCOPE)
-  set(err "${err}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
 
 expect_run(0 modes --preset vehicle_per_spring --presets ${PRESETS})
 string(JSON name GET "${out}" modes 1 name)
