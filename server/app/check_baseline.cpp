@@ -104,7 +104,7 @@ std::vector<Drift> compare_with_baseline(const Baseline& baseline, const std::st
     if (drifted) out.push_back({f.name, b, f.value, t, false});
   }
   for (const auto& [name, value] : recorded) {
-    const bool measured = std::any_of(figures.begin(), figures.end(), [&](const Figure& f) { return f.name == name; });
+    const bool measured = std::any_of(figures.begin(), figures.end(), [&wanted = name](const Figure& f) { return f.name == wanted; });
     if (!measured) out.push_back({name, value, std::nullopt, tolerance_for(baseline, name), true});
   }
   return out;

@@ -26,7 +26,7 @@ void check_tuning(const json& tuning) {
   json probe = json::object();
   for (const auto& [key, value] : tuning.items()) {
     const bool known = std::any_of(std::begin(kSceneTuningKeys), std::end(kSceneTuningKeys),
-                                   [&key](const char* k) { return key == k; });
+                                   [&name = key](const char* k) { return name == k; });
     if (!known) {
       throw codec::invalid_field("tuning." + key, "is not a tuning field (fps, substeps, response_frames or "
                                                   "frequency_hz, basis_fps, oscillation or damping_ratio, mode)");
