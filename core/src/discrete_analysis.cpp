@@ -44,6 +44,19 @@ void eigenvalues_2x2(const Eigen::Matrix2d& a, std::complex<double>& z1, std::co
   z2 = big != 0.0 ? det / big : half_trace - (half_trace >= 0.0 ? root : -root);
 }
 
+RecurrencePoles poles_of_recurrence(double p, double q, double h) {
+  Eigen::Matrix2d companion;
+  companion << p, q, 1.0, 0.0;
+  RecurrencePoles out;
+  eigenvalues_2x2(companion, out.z1, out.z2);
+  double f = 0.0, zeta = 0.0;
+  if (achieved_from_poles(out.z1, out.z2, h, f, zeta)) {
+    out.frequency_hz = f;
+    out.damping_ratio = zeta;
+  }
+  return out;
+}
+
 bool achieved_from_poles(std::complex<double> z1, std::complex<double> z2, double h, double& frequency_hz,
                          double& damping_ratio) {
   const double r1 = modulus(z1), r2 = modulus(z2);

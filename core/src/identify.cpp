@@ -265,17 +265,12 @@ MotionFit fit_motion(const Series& x, double h) {
     add_verdict(out.verdicts, IdentifyVerdict::not_oscillating);
     return out;
   }
-  Eigen::Matrix2d companion;
-  companion << p, q, 1.0, 0.0;
-  std::complex<double> z1, z2;
-  eigenvalues_2x2(companion, z1, z2);
+  const RecurrencePoles poles = poles_of_recurrence(p, q, h);
+  const std::complex<double> z1 = poles.z1, z2 = poles.z2;
   out.z1 = z1;
   out.z2 = z2;
-  double f = 0.0, zeta = 0.0;
-  if (achieved_from_poles(z1, z2, h, f, zeta)) {
-    out.frequency_hz = f;
-    out.damping_ratio = zeta;
-  }
+  out.frequency_hz = poles.frequency_hz;
+  out.damping_ratio = poles.damping_ratio;
   // Im(s) / 2 pi of the pole of largest modulus; a negative real pole oscillates at Nyquist.
   const std::complex<double> dominant = std::abs(z1) >= std::abs(z2) ? z1 : z2;
   const bool oscillates = std::abs(dominant.imag()) > 0.0 || dominant.real() < 0.0;

@@ -82,17 +82,11 @@ ResponseFit fit_response(const std::vector<double>& x, double h) {
         const Eigen::Vector3d p = qr.solve(y);
         out.samples_used = n;
         out.residual = (a * p - y).norm() / std::max(y.norm(), 1e-300);
-        Eigen::Matrix2d companion;
-        companion << p(0), p(1), 1.0, 0.0;
-        std::complex<double> z1, z2;
-        eigenvalues_2x2(companion, z1, z2);
-        out.z1 = z1;
-        out.z2 = z2;
-        double f = 0.0, zeta = 0.0;
-        if (achieved_from_poles(z1, z2, h, f, zeta)) {
-          out.frequency_hz = f;
-          out.damping_ratio = zeta;
-        }
+        const RecurrencePoles poles = poles_of_recurrence(p(0), p(1), h);
+        out.z1 = poles.z1;
+        out.z2 = poles.z2;
+        out.frequency_hz = poles.frequency_hz;
+        out.damping_ratio = poles.damping_ratio;
         // x_e = b / (1 - a1 - a2), back in the original units; undefined for an undamped (marginal) fit.
         const double denominator = 1.0 - p(0) - p(1);
         if (std::abs(denominator) > 1e-9) out.equilibrium = mean + scale * p(2) / denominator;

@@ -49,15 +49,12 @@ std::optional<TrajectoryFit> fit_trajectory_poles(std::span<const double> x, dou
   }
   const double p = (r1 * s00 - r0 * s10) / det;
   const double q = (s11 * r0 - s10 * r1) / det;
-  Eigen::Matrix2d companion;
-  companion << p, q, 1.0, 0.0;
-  eigenvalues_2x2(companion, fit.z1, fit.z2);
+  const RecurrencePoles poles = poles_of_recurrence(p, q, dt);
+  fit.z1 = poles.z1;
+  fit.z2 = poles.z2;
   fit.spectral_radius = std::max(std::abs(fit.z1), std::abs(fit.z2));
-  double f = 0.0, zeta = 0.0;
-  if (achieved_from_poles(fit.z1, fit.z2, dt, f, zeta)) {
-    fit.frequency_hz = f;
-    fit.damping_ratio = zeta;
-  }
+  fit.frequency_hz = poles.frequency_hz;
+  fit.damping_ratio = poles.damping_ratio;
   return fit;
 }
 

@@ -80,6 +80,21 @@ nlohmann::json request_from(const Flags& flags, const std::function<nlohmann::js
   return read_request_file(*file);
 }
 
+nlohmann::json scene_request_from(const Flags& flags) {
+  if (flags.has("preset") == flags.has("request")) {
+    throw codec::invalid_field("--preset", "give exactly one of --preset NAME and --request FILE");
+  }
+  nlohmann::json request;
+  if (auto name = flags.get("preset")) {
+    request = {{"preset", *name}};
+  } else {
+    request = read_request_file(*flags.get("request"));
+    if (!request.is_object()) throw codec::invalid_field("--request", "must hold a JSON object");
+  }
+  if (auto m = flags.get("mass-model")) request["mass_model"] = *m;
+  return request;
+}
+
 void print_json(const nlohmann::json& doc) { std::cout << doc.dump(2) << '\n'; }
 
 void print_answer(const app::Answer& answer) {

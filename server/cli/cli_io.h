@@ -37,6 +37,10 @@ nlohmann::json read_request_file(const std::string& path);
 /// `from_flags` builds from the flags.
 nlohmann::json request_from(const Flags& flags, const std::function<nlohmann::json()>& from_flags);
 
+/// The scene request of `simulate` and `modes`: {"preset": NAME} from `--preset NAME`, or the JSON object in
+/// `--request FILE` (exactly one of the two), with `--mass-model M` as its mass_model.
+nlohmann::json scene_request_from(const Flags& flags);
+
 /// Prints a JSON document on stdout.
 void print_json(const nlohmann::json& doc);
 

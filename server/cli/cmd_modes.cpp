@@ -31,15 +31,7 @@ int run_modes(const Args& args) {
       return kExitOk;
     }
     if (!flags.positional.empty()) throw codec::invalid_field(flags.positional.front(), "is not an argument of modes (see --help)");
-    if (flags.has("preset") == flags.has("request")) throw codec::invalid_field("--preset", "give exactly one of --preset NAME and --request FILE");
-    nlohmann::json request;
-    if (auto name = flags.get("preset")) {
-      request = {{"preset", *name}};
-    } else {
-      request = read_request_file(*flags.get("request"));
-      if (!request.is_object()) throw codec::invalid_field("--request", "must hold a JSON object");
-    }
-    if (auto m = flags.get("mass-model")) request["mass_model"] = *m;
+    nlohmann::json request = scene_request_from(flags);
     if (flags.has("at")) request["at_s"] = flag_number(flags, "at");
     print_json(app::run_modes(request, app::resolve_presets_dir(flags.get("presets"))));
     return kExitOk;

@@ -33,15 +33,7 @@ int run_simulate(const Args& args) {
       return kExitOk;
     }
     if (!flags.positional.empty()) throw codec::invalid_field(flags.positional.front(), "is not an argument of simulate (see --help)");
-    if (flags.has("preset") == flags.has("request")) throw codec::invalid_field("--preset", "give exactly one of --preset NAME and --request FILE");
-    nlohmann::json request;
-    if (auto name = flags.get("preset")) {
-      request = {{"preset", *name}};
-    } else {
-      request = read_request_file(*flags.get("request"));
-      if (!request.is_object()) throw codec::invalid_field("--request", "must hold a JSON object");
-    }
-    if (auto m = flags.get("mass-model")) request["mass_model"] = *m;
+    nlohmann::json request = scene_request_from(flags);
     if (flags.has("frames")) request["frames"] = true;
     if (flags.has("frame-stride")) request["frame_stride"] = flag_number(flags, "frame-stride");
     print_json(app::run_simulate(request, app::resolve_presets_dir(flags.get("presets"))));

@@ -119,6 +119,21 @@ TEST(DiscreteAnalysis, ImplicitEulerSlowsAndDampsAsTheSpecSays) {
   EXPECT_NEAR(*fifteen.achieved_damping_ratio, 0.53, 0.005);
 }
 
+TEST(DiscreteAnalysis, RecurrenceOfASampledDampedOscillatorGivesItsFrequencyAndDamping) {
+  // x(t) = e^{-zeta omega t} cos(omega_d t) sampled every h obeys x[n] = 2 r cos(omega_d h) x[n-1] - r^2 x[n-2]
+  // with r = e^{-zeta omega h}: its poles are e^{s h}, and reading them returns omega and zeta exactly.
+  const double h = 1.0 / 60, omega = 2 * kPi * 3.0, zeta = 0.2;
+  const double r = std::exp(-zeta * omega * h), wd = omega * std::sqrt(1 - zeta * zeta);
+  const RecurrencePoles poles = poles_of_recurrence(2 * r * std::cos(wd * h), -r * r, h);
+  ASSERT_TRUE(poles.frequency_hz && poles.damping_ratio);
+  EXPECT_NEAR(*poles.frequency_hz, 3.0, 1e-12);
+  EXPECT_NEAR(*poles.damping_ratio, zeta, 1e-12);
+  EXPECT_NEAR(std::abs(poles.z1), r, 1e-15);
+  // A decaying exponential alone (q = 0): one pole at e^{-a h}, one at zero, so no frequency to read.
+  const RecurrencePoles decay = poles_of_recurrence(std::exp(-5.0 * h), 0.0, h);
+  EXPECT_FALSE(decay.frequency_hz.has_value());
+}
+
 TEST(DiscreteAnalysis, EigenvaluesOfRealMatrices) {
   std::complex<double> z1, z2;
   Eigen::Matrix2d a;

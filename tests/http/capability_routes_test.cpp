@@ -19,6 +19,7 @@
 
 using nlohmann::json;
 using softtune::http::testing::conformance_error;
+using softtune::http::testing::presets_config;
 using softtune::http::testing::quick_options;
 using softtune::http::testing::TestServer;
 using softtune::http::testing::web_config;
@@ -27,13 +28,7 @@ namespace {
 
 const char* kJson = "application/json";
 const char* kProblem = "application/problem+json";
-const std::string kPresets = SOFTTUNE_SOURCE_DIR "/presets";
-
-softtune::http::ServiceConfig presets_config() {
-  softtune::http::ServiceConfig c = web_config();
-  c.presets_dir = kPresets;
-  return c;
-}
+const std::string& kPresets = softtune::http::testing::kRepositoryPresets;
 
 std::string media_type(const httplib::Result& r) {
   const std::string t = r->get_header_value("Content-Type");

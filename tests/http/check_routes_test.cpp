@@ -9,6 +9,7 @@
 
 using nlohmann::json;
 using softtune::http::testing::conformance_error;
+using softtune::http::testing::presets_config;
 using softtune::http::testing::quick_options;
 using softtune::http::testing::TestServer;
 using softtune::http::testing::web_config;
@@ -16,13 +17,7 @@ using softtune::http::testing::web_config;
 namespace {
 
 const char* kJson = "application/json";
-const std::string kPresets = SOFTTUNE_SOURCE_DIR "/presets";
-
-softtune::http::ServiceConfig presets_config() {
-  softtune::http::ServiceConfig c = web_config();
-  c.presets_dir = kPresets;
-  return c;
-}
+const std::string& kPresets = softtune::http::testing::kRepositoryPresets;
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include "test_server.h"
 
 using nlohmann::json;
+using softtune::http::testing::presets_config;
 using softtune::http::testing::TestServer;
 
 namespace {
@@ -19,13 +20,6 @@ json post_preview(httplib::Client& c, const json& body, int& status) {
   auto r = c.Post("/api/v1/preview", body.dump(), "application/json");
   status = r ? r->status : 0;
   return r ? json::parse(r->body) : json();
-}
-
-// The repository's presets as `softtune serve --presets DIR` gives them (not through $SOFTTUNE_PRESETS).
-softtune::http::ServiceConfig presets_config() {
-  softtune::http::ServiceConfig config = softtune::http::testing::web_config();
-  config.presets_dir = SOFTTUNE_SOURCE_DIR "/presets";
-  return config;
 }
 
 // Whether a shared object whose file name contains `name` is mapped into this process.

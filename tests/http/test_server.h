@@ -36,6 +36,15 @@ inline ServiceConfig web_config() {
   return c;
 }
 
+/// The repository's presets directory, and the service as `softtune serve --presets DIR` gives it
+/// (not through $SOFTTUNE_PRESETS).
+inline const std::string kRepositoryPresets = SOFTTUNE_SOURCE_DIR "/presets";
+inline ServiceConfig presets_config() {
+  ServiceConfig c = web_config();
+  c.presets_dir = kRepositoryPresets;
+  return c;
+}
+
 class TestServer {
  public:
   explicit TestServer(TransportOptions options = quick_options(), ServiceConfig config = web_config())

@@ -44,6 +44,18 @@ void eigenvalues_2x2(const Eigen::Matrix2d& a, std::complex<double>& z1, std::co
 bool achieved_from_poles(std::complex<double> z1, std::complex<double> z2, double h, double& frequency_hz,
                          double& damping_ratio);
 
+/// The discrete poles of a fitted second-order recurrence and what they read as.
+struct RecurrencePoles {
+  std::complex<double> z1, z2;
+  std::optional<double> frequency_hz;   ///< empty when achieved_from_poles is undefined
+  std::optional<double> damping_ratio;
+};
+
+/// Poles of x[n] = p x[n-1] + q x[n-2] (+ b): the roots of z^2 - p z - q, i.e. the eigenvalues of the
+/// companion matrix [[p, q], [1, 0]], read over the sample interval h. The one reading every fit shares
+/// (response_fit, trajectory_fit, identify).
+RecurrencePoles poles_of_recurrence(double p, double q, double h);
+
 /// Largest stable h (s) in closed form from the Jury conditions on A (x = omega h):
 ///   explicit Euler:      x < 2 zeta for zeta <= 1, x < 2 (zeta - sqrt(zeta^2 - 1)) for zeta > 1
 ///                        (zeta = 0: never stable, returns 0)

@@ -135,11 +135,7 @@ Parameters parameters_of(const Setup& s, double k, double d) {
   return {{"b2DistanceJointDef::stiffness", k, "N/m"}, {"b2DistanceJointDef::damping", d, "N s/m"}};
 }
 
-bool meets(const Prediction& p, const Target& t) {
-  return p.frequency_hz && p.damping_ratio &&
-         std::abs(*p.frequency_hz / frequency_from_angular(t.omega) - 1.0) <= kExactFrequencyTolerance &&
-         std::abs(*p.damping_ratio - t.damping_ratio) <= kExactDampingTolerance;
-}
+bool meets(const Prediction& p, const Target& t) { return meets_response(p, t.omega, t.damping_ratio); }
 
 // softtune's exact spring at zeta' = kExactDampingTolerance / 2 when less was asked: its poles differ from
 // the request's by less than the tolerance, and its d + h k stays clear of the engine's zero.

@@ -101,11 +101,7 @@ Parameters parameters_of(const Typed& p) {
           {"b2DistanceJointDef::dampingRatio", p.damping_ratio, ""}};
 }
 
-bool meets(const Prediction& p, const Target& t) {
-  return p.stable && p.frequency_hz && p.damping_ratio &&
-         std::abs(*p.frequency_hz / frequency_from_angular(t.omega) - 1.0) <= kExactFrequencyTolerance &&
-         std::abs(*p.damping_ratio - t.damping_ratio) <= kExactDampingTolerance;
-}
+bool meets(const Prediction& p, const Target& t) { return p.stable && meets_response(p, t.omega, t.damping_ratio); }
 
 EngineReport report(const Target& t, const SettingValues& values) {
   EngineReport out;

@@ -97,11 +97,7 @@ TargetPoles target_poles(double omega, double zeta, double h) {
   return out;
 }
 
-bool meets(const Prediction& p, double omega, double zeta) {
-  return p.stable && p.frequency_hz && p.damping_ratio &&
-         std::abs(*p.frequency_hz / frequency_from_angular(omega) - 1.0) <= kExactFrequencyTolerance &&
-         std::abs(*p.damping_ratio - zeta) <= kExactDampingTolerance;
-}
+bool meets(const Prediction& p, double omega, double zeta) { return p.stable && meets_response(p, omega, zeta); }
 
 // The m get_limit_motor_info2 computes for a linear spring: the body masses' reduced mass, which the tune
 // knows when a constraint was given; otherwise the body is taken to be a point on its anchor (m = m_eff).

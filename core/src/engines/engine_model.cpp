@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 
+#include "softtune/designer.h"
 #include "softtune/discrete_analysis.h"
 
 namespace softtune::engines {
@@ -131,6 +132,12 @@ struct Residual {
 };
 
 }  // namespace
+
+bool meets_response(const Prediction& p, double omega, double zeta, double scale) {
+  return p.frequency_hz && p.damping_ratio &&
+         std::abs(*p.frequency_hz / frequency_from_angular(omega) - 1.0) <= scale * kExactFrequencyTolerance &&
+         std::abs(*p.damping_ratio - zeta) <= scale * kExactDampingTolerance;
+}
 
 ResponseSolve solve_response(const std::function<std::optional<Prediction>(double p0, double p1)>& predict,
                              double omega, double zeta, double guess0, double guess1) {

@@ -103,11 +103,7 @@ std::optional<Parameters> parameters_of(int mode, double m, double k, double c) 
   }
 }
 
-bool meets(const Prediction& p, const Target& t) {
-  return p.frequency_hz && p.damping_ratio &&
-         std::abs(*p.frequency_hz / frequency_from_angular(t.omega) - 1.0) <= kExactFrequencyTolerance &&
-         std::abs(*p.damping_ratio - t.damping_ratio) <= kExactDampingTolerance;
-}
+bool meets(const Prediction& p, const Target& t) { return meets_response(p, t.omega, t.damping_ratio); }
 
 EngineReport report(const Target& t, const SettingValues& values) {
   EngineReport out;

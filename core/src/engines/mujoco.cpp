@@ -170,11 +170,7 @@ MujocoGains rk4_exact_gains(double omega, double zeta, double h) {
   return g;
 }
 
-bool meets(const Prediction& p, double omega, double zeta) {
-  return p.stable && p.frequency_hz && p.damping_ratio &&
-         std::abs(*p.frequency_hz / frequency_from_angular(omega) - 1.0) <= kExactFrequencyTolerance &&
-         std::abs(*p.damping_ratio - zeta) <= kExactDampingTolerance;
-}
+bool meets(const Prediction& p, double omega, double zeta) { return p.stable && meets_response(p, omega, zeta); }
 
 EngineReport report(const Target& t, const SettingValues& values) {
   EngineReport out;

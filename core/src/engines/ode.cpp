@@ -72,11 +72,7 @@ std::optional<Prediction> predict_row(double m, double erp, double cfm, double h
   return predict_from_step_map(ode_step_map(m, erp, cfm, h, rho), h);
 }
 
-bool meets(const Prediction& p, const Target& t) {
-  return p.stable && p.frequency_hz && p.damping_ratio &&
-         std::abs(*p.frequency_hz / frequency_from_angular(t.omega) - 1.0) <= kExactFrequencyTolerance &&
-         std::abs(*p.damping_ratio - t.damping_ratio) <= kExactDampingTolerance;
-}
+bool meets(const Prediction& p, const Target& t) { return p.stable && meets_response(p, t.omega, t.damping_ratio); }
 
 EngineReport report(const Target& t, const SettingValues& values) {
   EngineReport out;

@@ -85,11 +85,7 @@ std::optional<Prediction> predict_drive(double m, double k, double d, double dt,
   return predict_from_step_map(physx_step_map(m, k, d, dt, substeps), dt);
 }
 
-bool meets(const Prediction& p, const Target& t) {
-  return p.stable && p.frequency_hz && p.damping_ratio &&
-         std::abs(*p.frequency_hz / frequency_from_angular(t.omega) - 1.0) <= kExactFrequencyTolerance &&
-         std::abs(*p.damping_ratio - t.damping_ratio) <= kExactDampingTolerance;
-}
+bool meets(const Prediction& p, const Target& t) { return p.stable && meets_response(p, t.omega, t.damping_ratio); }
 
 // The undamped drive (d = 0) whose implicit-Euler substep has natural frequency omega: its poles are
 // z = (1 +- i q) / (1 + q^2), q = h sqrt(k / m), so s h = -ln(1 + q^2) / 2 +- i atan(q) and

@@ -99,10 +99,7 @@ double frequency_error(const Prediction& p, const Target& t) {
   return *p.frequency_hz / frequency_from_angular(t.omega) - 1.0;
 }
 
-bool meets(const Prediction& p, const Target& t) {
-  return p.frequency_hz && p.damping_ratio && std::abs(frequency_error(p, t)) <= kExactFrequencyTolerance &&
-         std::abs(*p.damping_ratio - t.damping_ratio) <= kExactDampingTolerance;
-}
+bool meets(const Prediction& p, const Target& t) { return meets_response(p, t.omega, t.damping_ratio); }
 
 EngineReport report(const Target& t, const SettingValues& values) {
   EngineReport out;
@@ -143,9 +140,7 @@ EngineReport report(const Target& t, const SettingValues& values) {
     e = predict_spring(s, candidate->k, candidate->c);
   }
   // The solver aims ten times inside the tolerance, as solve_response does.
-  const bool tight = e && e->frequency_hz && e->damping_ratio &&
-                     std::abs(frequency_error(*e, t)) <= 0.1 * kExactFrequencyTolerance &&
-                     std::abs(*e->damping_ratio - t.damping_ratio) <= 0.1 * kExactDampingTolerance;
+  const bool tight = e && meets_response(*e, t.omega, t.damping_ratio, 0.1);
   if (candidate && !tight && s.damping_scale != 1.0) {
     const ResponseSolve solve = solve_response(
         [&](double k_try, double c_try) { return predict_spring(s, k_try, c_try); }, t.omega, t.damping_ratio,

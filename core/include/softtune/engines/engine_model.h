@@ -124,6 +124,11 @@ inline constexpr double kExactFrequencyTolerance = 1e-3;
 inline constexpr double kExactDampingTolerance = 5e-3;
 inline constexpr int kMaxSolveEvaluations = 400;
 
+/// Whether a prediction has natural frequency omega (rad/s) and damping ratio zeta within `scale` times the
+/// exact tolerances. Stability is the caller's to add (an engine that clamps may report a met response
+/// whose map is marginal).
+bool meets_response(const Prediction& p, double omega, double zeta, double scale = 1.0);
+
 /// Finds parameters (p0, p1) whose prediction has natural frequency omega (rad/s) and damping ratio zeta:
 /// damped Newton on the residual (ln f / f_asked, zeta - zeta_asked) over (ln p0, p1), with a
 /// finite-difference Jacobian, from the guess. p0 is a positive stiffness-like parameter (searched in log
