@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "app/preset_stability_app.h"
+#include "app/preset_store.h"
 #include "app/stability_app.h"
 #include "cli/cli_io.h"
 #include "codec/problem.h"
@@ -15,6 +16,7 @@ constexpr const char* kHelp = R"(softtune stability: predicted (step matrix) aga
   softtune stability                 the default sweep (>= 10,000 cases) and the sequential-impulse chain
   softtune stability --preset NAME   each tuned joint's highest stable frequency in Box2D 2.4 (a table;
                                      --format json for the JSON), found on the real solver's motion
+    --presets DIR       presets directory (default: $SOFTTUNE_PRESETS, else ./presets)
   softtune stability --request FILE  a custom sweep (- for stdin): methods, frequency_ratios, stiffnesses,
                                      damping_ratios, masses, steps, max_stiffness, observe_steps,
                                      include_cases, chain
@@ -28,7 +30,7 @@ Exit code 0 when every observation matches its prediction, 1 otherwise; bad inpu
 
 int run_stability(const Args& args) {
   return guarded([&] {
-    const Flags flags = parse_flags(args, {"request", "format", "preset"}, {"help", "summary"});
+    const Flags flags = parse_flags(args, {"request", "format", "preset", "presets"}, {"help", "summary"});
     if (flags.has("help")) {
       std::cout << kHelp;
       return kExitOk;
@@ -44,7 +46,7 @@ int run_stability(const Args& args) {
     codec::StabilityRequest q = codec::decode_stability_request(doc);
     if (flags.has("summary") || format == app::Format::svg) q.include_cases = false;
     if (q.preset) {
-      const nlohmann::json out = app::stability_answer(q, format).json;
+      const nlohmann::json out = app::stability_answer(q, format, app::resolve_presets_dir(flags.get("presets"))).json;
       if (flags.get("format")) {
         print_json(out);
       } else {
