@@ -63,8 +63,12 @@ void JobRunner::forget_old() {
   while (!finished_.empty()) {
     auto it = jobs_.find(finished_.front());
     const bool expired = it == jobs_.end() || now - it->second->ended > limits_.keep_for;
-    if (!expired && finished_.size() <= limits_.max_kept) break;
-    if (it != jobs_.end()) jobs_.erase(it);
+    const bool over = finished_.size() > limits_.max_kept || (finished_.size() > 1 && kept_bytes_ > limits_.max_kept_bytes);
+    if (!expired && !over) break;
+    if (it != jobs_.end()) {
+      if (it->second->result) kept_bytes_ -= it->second->result->size();
+      jobs_.erase(it);
+    }
     finished_.pop_front();
   }
 }
@@ -83,7 +87,7 @@ std::optional<std::string> JobRunner::submit(Work work) {
   return job->id;
 }
 
-std::optional<json> JobRunner::status(const std::string& id) {
+std::optional<std::string> JobRunner::status(const std::string& id) {
   const std::lock_guard lock(mutex_);  // state, result and times change under it
   forget_old();
   auto it = jobs_.find(id);
@@ -101,9 +105,14 @@ std::optional<json> JobRunner::status(const std::string& id) {
                             {"fraction", total == 0 ? (job->state == JobState::done ? 1.0 : 0.0)
                                                     : std::min(1.0, static_cast<double>(done) / static_cast<double>(total))}}},
               {"elapsed_s", std::chrono::duration<double>(end - begin).count()}};
-  if (job->result) out["result"] = *job->result;
   if (job->problem) out["problem"] = *job->problem;
-  return out;
+  std::string text = out.dump();
+  if (job->result) {
+    text.pop_back();  // the closing brace: "result" goes last
+    text.reserve(text.size() + job->result->size() + 12);
+    text.append(",\"result\":").append(*job->result).append("}");
+  }
+  return text;
 }
 
 bool JobRunner::cancel(const std::string& id) {
@@ -142,9 +151,11 @@ void JobRunner::run() {
       job->started = std::chrono::steady_clock::now();
     }
     JobState state = JobState::done;
-    std::optional<json> result, problem;
+    std::optional<std::string> result;
+    std::optional<json> problem;
     try {
-      result = job->work(job->progress);
+      // Kept as text: a sweep's tree of a few million nodes is several times its text.
+      result = job->work(job->progress).dump();
       if (job->progress.cancelled()) state = JobState::cancelled, result.reset();
     } catch (const JobCancelled&) {
       state = JobState::cancelled;
@@ -159,6 +170,7 @@ void JobRunner::run() {
       const std::lock_guard lock(mutex_);
       job->state = state;
       job->result = std::move(result);
+      if (job->result) kept_bytes_ += job->result->size();
       job->problem = std::move(problem);
       job->ended = std::chrono::steady_clock::now();
       job->work = nullptr;  // the closure's request copy is freed before the trim

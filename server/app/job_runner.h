@@ -33,11 +33,15 @@ struct JobLimits {
   std::size_t max_queued = 8;   ///< jobs waiting or running at once; one more is refused (503)
   std::size_t max_kept = 32;    ///< finished jobs kept; the oldest is forgotten first
   std::chrono::seconds keep_for{600};  ///< a finished job is forgotten this long after it ended
+  /// Bytes of finished results (their JSON text) kept; past it the oldest are forgotten. Eight default
+  /// sweeps kept as JSON trees held 290 MB; as text, about 8 MB each.
+  std::size_t max_kept_bytes = std::size_t{64} << 20;
 };
 
 /// The runner's default bounds.
 inline constexpr std::size_t kMaxQueuedJobs = 8, kMaxKeptJobs = 32;
 inline constexpr std::chrono::seconds kKeepJobsFor{600};
+inline constexpr std::size_t kMaxKeptJobBytes = std::size_t{64} << 20;
 
 /// A job's id: "j" and 16 lower-case hex digits (random, so ids do not tell how many jobs ran).
 inline constexpr std::size_t kJobIdLength = 17;
@@ -57,9 +61,10 @@ class JobRunner {
 
   /// Queues `work`; its id, or nullopt when max_queued jobs are already waiting or running.
   std::optional<std::string> submit(Work work);
-  /// {"id", "state", "progress": {"done", "total", "fraction"}, "elapsed_s", "result"?, "problem"?};
-  /// nullopt for an unknown (or forgotten) id.
-  std::optional<nlohmann::json> status(const std::string& id);
+  /// {"id", "state", "progress": {"done", "total", "fraction"}, "elapsed_s", "result"?, "problem"?} as JSON
+  /// text (the result is kept as text and spliced in, never parsed again); nullopt for an unknown (or
+  /// forgotten) id.
+  std::optional<std::string> status(const std::string& id);
   /// Cancels a queued or running job (a running one stops at its next progress point); false when unknown.
   bool cancel(const std::string& id);
 
@@ -70,7 +75,8 @@ class JobRunner {
     JobProgress progress;
     JobState state = JobState::queued;
     std::chrono::steady_clock::time_point submitted = std::chrono::steady_clock::now(), started, ended;
-    std::optional<nlohmann::json> result, problem;
+    std::optional<std::string> result;  ///< the result's JSON text
+    std::optional<nlohmann::json> problem;
   };
   void run();
   void forget_old();  ///< with mutex_ held
@@ -84,6 +90,7 @@ class JobRunner {
   std::deque<std::shared_ptr<Job>> queue_;
   std::deque<std::string> finished_;  ///< ids, oldest first
   std::size_t active_ = 0;            ///< queued or running
+  std::size_t kept_bytes_ = 0;        ///< of the finished jobs' results
   bool stopping_ = false;
   std::uint64_t id_state_;
   std::thread worker_;

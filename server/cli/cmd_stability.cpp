@@ -36,7 +36,10 @@ int run_stability(const Args& args) {
     if (auto file = flags.get("request")) doc = read_request_file(*file);
     codec::StabilityRequest q = codec::decode_stability_request(doc);
     if (flags.has("summary") || format == app::Format::svg) q.include_cases = false;
-    const nlohmann::json out = app::run_stability(q);
+    // The CLI holds no server thread: it runs what a job may (the job budget, 60 s), in process.
+    app::require_stability_job_budget(q);
+    app::JobProgress progress;
+    const nlohmann::json out = app::run_stability_job(q, progress);
     if (format == app::Format::svg) {
       std::cout << app::stability_svg(out);
     } else if (flags.has("summary")) {

@@ -21,7 +21,7 @@ class LazyJobs {
   app::JobRunner& get() {
     std::call_once(once_, [this] {
       runner_ = std::make_unique<app::JobRunner>(
-          app::JobLimits{app::kMaxQueuedJobs, app::kMaxKeptJobs, app::kKeepJobsFor}, trim_allocator);
+          app::JobLimits{app::kMaxQueuedJobs, app::kMaxKeptJobs, app::kKeepJobsFor, app::kMaxKeptJobBytes}, trim_allocator);
       started_.store(true, std::memory_order_release);
     });
     return *runner_;
@@ -85,13 +85,19 @@ std::vector<Route> job_routes() {
          const std::string& id = checked_id(request);
          auto status = jobs->started() ? jobs->get().status(id) : std::nullopt;
          if (!status) throw unknown_job(id);
-         return json_response(*status);
+         HttpResponse r;
+         r.body = std::move(*status);
+         return r;
        }},
       {"DELETE", std::string(kJobsPrefix) + "/{id}",
        [jobs](const HttpRequest& request, Service&) {
          const std::string& id = checked_id(request);
          if (!jobs->started() || !jobs->get().cancel(id)) throw unknown_job(id);
-         return json_response(*jobs->get().status(id));
+         auto status = jobs->get().status(id);
+         if (!status) throw unknown_job(id);
+         HttpResponse r;
+         r.body = std::move(*status);
+         return r;
        }},
   };
 }

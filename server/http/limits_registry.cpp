@@ -81,6 +81,7 @@ std::vector<NumericLimit> numeric_limits() {
       {"max_queued_jobs", D(app::kMaxQueuedJobs)},
       {"max_kept_jobs", D(app::kMaxKeptJobs)},
       {"job_kept_s", D(app::kKeepJobsFor.count())},
+      {"max_kept_job_bytes", D(app::kMaxKeptJobBytes)},
       {"scene_max_duration_s", sl::kMaxDurationS},
       {"scene_max_steps", sl::kMaxSceneSteps},
       {"scene_max_body_steps", sl::kMaxBodySteps},
@@ -178,8 +179,9 @@ std::vector<LimitRow> request_rows() {
        "422 naming the fields that drive the cost, before the job is queued"},
       {"jobs",
        figure(app::kMaxQueuedJobs) + " queued or running at once, run one at a time on one worker thread; " +
-           figure(app::kMaxKeptJobs) + " finished jobs kept, each for at most " + figure(static_cast<int>(app::kKeepJobsFor.count())) + " s",
-       "`server/app/job_runner.h` `kMaxQueuedJobs`, `kMaxKeptJobs`, `kKeepJobsFor`",
+           figure(app::kMaxKeptJobs) + " finished jobs kept, " + bytes(app::kMaxKeptJobBytes) +
+           " of their results as JSON text, each for at most " + figure(static_cast<int>(app::kKeepJobsFor.count())) + " s",
+       "`server/app/job_runner.h` `kMaxQueuedJobs`, `kMaxKeptJobs`, `kMaxKeptJobBytes`, `kKeepJobsFor`",
        "503 with `Retry-After: 5` when the queue is full; a forgotten job's status is a 404"},
       {"query parameters", "only those a route reads (`format` on accuracy and stability), each once",
        "`server/http/routes.cpp` (each row's list), `server/http/service.cpp`", "422 naming the parameter"},

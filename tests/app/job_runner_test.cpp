@@ -24,7 +24,7 @@ using nlohmann::json;
 json wait_until_ended(JobRunner& runner, const std::string& id, std::vector<std::size_t>* seen = nullptr) {
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
   for (;;) {
-    const json s = runner.status(id).value();
+    const json s = json::parse(runner.status(id).value());
     if (seen) seen->push_back(s["progress"]["done"].get<std::size_t>());
     const std::string state = s["state"];
     if (state == "done" || state == "failed" || state == "cancelled") return s;
@@ -71,7 +71,7 @@ TEST(JobRunner, CancelStopsARunningSweepAtItsNextCase) {
   const codec::StabilityRequest q = codec::decode_stability_request({{"observe_steps", 20000}, {"chain", false}});
   const auto id = runner.submit([&q](JobProgress& p) { return run_stability_job(q, p); });
   ASSERT_TRUE(id);
-  while (runner.status(*id).value()["progress"]["done"].get<std::size_t>() < 10) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  while (json::parse(runner.status(*id).value())["progress"]["done"].get<std::size_t>() < 10) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   EXPECT_TRUE(runner.cancel(*id));
   const json s = wait_until_ended(runner, *id);
   EXPECT_EQ(s["state"], "cancelled");
@@ -82,7 +82,7 @@ TEST(JobRunner, CancelStopsARunningSweepAtItsNextCase) {
 }
 
 TEST(JobRunner, QueueIsBoundedAndAQueuedCancelFreesItsPlace) {
-  JobRunner runner(JobLimits{2, 4, std::chrono::seconds(600)});
+  JobRunner runner(JobLimits{2, 4, std::chrono::seconds(600), kMaxKeptJobBytes});
   // A job that runs until cancelled, one unit a millisecond.
   auto endless = [](JobProgress& p) -> json {
     p.set_total(1000000);
@@ -93,7 +93,7 @@ TEST(JobRunner, QueueIsBoundedAndAQueuedCancelFreesItsPlace) {
   ASSERT_TRUE(a && b);
   EXPECT_FALSE(runner.submit(endless));
   EXPECT_TRUE(runner.cancel(*b));  // queued behind a: cancelled at once
-  EXPECT_EQ(runner.status(*b).value()["state"], "cancelled");
+  EXPECT_EQ(json::parse(runner.status(*b).value())["state"], "cancelled");
   const auto c = runner.submit(endless);
   EXPECT_TRUE(c);
   runner.cancel(*a);
@@ -102,7 +102,7 @@ TEST(JobRunner, QueueIsBoundedAndAQueuedCancelFreesItsPlace) {
 }
 
 TEST(JobRunner, FailuresCarryTheirProblemAndFinishedJobsAreBounded) {
-  JobRunner runner(JobLimits{4, 1, std::chrono::seconds(600)});
+  JobRunner runner(JobLimits{4, 1, std::chrono::seconds(600), kMaxKeptJobBytes});
   const auto bad = runner.submit([](JobProgress&) -> json { throw codec::invalid_field("observe_steps", "must be small"); });
   ASSERT_TRUE(bad);
   const json s = wait_until_ended(runner, *bad);
@@ -117,6 +117,19 @@ TEST(JobRunner, FailuresCarryTheirProblemAndFinishedJobsAreBounded) {
   ASSERT_TRUE(good);
   EXPECT_EQ(wait_until_ended(runner, *good)["result"], json({{"ok", true}}));
   EXPECT_FALSE(runner.status(*bad)) << "only one finished job is kept";
+}
+
+TEST(JobRunner, KeptResultsAreBoundedInBytes) {
+  JobRunner runner(JobLimits{4, 32, std::chrono::seconds(600), 300});
+  auto text = [](JobProgress&) -> json { return std::string(200, 'x'); };  // 202 bytes of JSON text
+  const auto first = runner.submit(text);
+  ASSERT_TRUE(first);
+  EXPECT_EQ(json::parse(wait_until_ended(runner, *first).dump())["result"], std::string(200, 'x'));
+  const auto second = runner.submit(text);
+  ASSERT_TRUE(second);
+  EXPECT_EQ(wait_until_ended(runner, *second)["state"], "done");
+  EXPECT_FALSE(runner.status(*first)) << "404 bytes kept, over the 300-byte bound: the oldest goes";
+  EXPECT_TRUE(runner.status(*second)) << "the newest result is kept whatever its size";
 }
 
 TEST(JobRunner, IdsHaveOneForm) {
