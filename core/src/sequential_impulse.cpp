@@ -137,13 +137,17 @@ namespace {
 // the batch is rescaled by a power of two (exact in floating point) and the exponent kept, so a fast decay
 // never reaches denormals (which cost ~100x per operation) and a growth never overflows: the observed
 // radius is then the measured growth rate even of a blow-up. Empty when the simulation turned non-finite.
-std::optional<double> observe_chain(const ChainModel& model, int observe_steps) {
-  const ChainJoints joints = chain_joints(model);
-  using Row = Eigen::Array<double, 1, 6>;
+// K unit states side by side: all six, or (no warm starting) the four motion states only: a step then reads
+// no Lambda input (step_rows starts each step's impulses at zero), so A's Lambda columns are exactly zero and
+// so are A^N's; stepping them cost a third of the batch for nothing. The map gets those zero columns back,
+// so the radius is the same number either way.
+template <int K>
+std::optional<double> observe_chain_states(const ChainModel& model, const ChainJoints& joints, int observe_steps) {
+  using Row = Eigen::Array<double, 1, K>;
   std::array<Row, 6> rows;
   for (int i = 0; i < 6; ++i) {
     rows[i] = Row::Zero();
-    rows[i](i) = 1.0;
+    if (i < K) rows[i](i) = 1.0;
   }
   long log2_scale = 0;
   for (int n = 0; n < observe_steps; ++n) {
@@ -159,12 +163,18 @@ std::optional<double> observe_chain(const ChainModel& model, int observe_steps) 
       log2_scale += e;
     }
   }
-  ChainMatrix map;
-  for (int i = 0; i < 6; ++i) map.row(i) = rows[i].matrix();
+  ChainMatrix map = ChainMatrix::Zero();
+  for (int i = 0; i < 6; ++i) map.row(i).template head<K>() = rows[i].matrix();
   const double rho_n = chain_spectral_radius(map);
   if (!std::isfinite(rho_n)) return std::nullopt;
   if (rho_n == 0.0) return 0.0;
   return std::exp((std::log(rho_n) + static_cast<double>(log2_scale) * std::numbers::ln2) / observe_steps);
+}
+
+std::optional<double> observe_chain(const ChainModel& model, int observe_steps) {
+  const ChainJoints joints = chain_joints(model);
+  if (model.warm_start) return observe_chain_states<6>(model, joints, observe_steps);
+  return observe_chain_states<4>(model, joints, observe_steps);
 }
 
 Verdict observed_verdict(const std::optional<double>& rho) {

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/preset_stability_app.h"
+#include "app/preset_store.h"
 #include "app/stability_cost.h"
+#include "codec/problem.h"
 #include "plot/svg_writer.h"
 
 namespace softtune::app {
@@ -36,25 +39,31 @@ json sweep_and_encode(const codec::StabilityRequest& q, JobProgress* progress) {
 
 }  // namespace
 
-json run_stability(const codec::StabilityRequest& q) {
+json run_stability(const codec::StabilityRequest& q, const std::string& presets_dir) {
+  if (q.preset) return run_preset_stability(*q.preset, presets_dir.empty() ? resolve_presets_dir() : presets_dir);
   require_within_budget(stability_cost(q), request_budget(job_route_hint(kStabilityJobsRoute)));
   return sweep_and_encode(q, nullptr);
 }
 
-void require_stability_job_budget(const codec::StabilityRequest& q) { require_within_budget(stability_cost(q), job_budget()); }
+void require_stability_job_budget(const codec::StabilityRequest& q) {
+  // A preset search reports no progress of its own and fits the request budget: it runs on the synchronous route.
+  if (q.preset) throw codec::invalid_field("preset", "a preset search runs on POST /api/v1/stability; a job runs a sweep");
+  require_within_budget(stability_cost(q), job_budget());
+}
 
 json run_stability_job(const codec::StabilityRequest& q, JobProgress& progress) { return sweep_and_encode(q, &progress); }
 
 json run_stability(const json& doc) { return run_stability(codec::decode_stability_request(doc)); }
 
-Answer stability_answer(codec::StabilityRequest request, Format format) {
+Answer stability_answer(codec::StabilityRequest request, Format format, const std::string& presets_dir) {
   Answer a;
   a.format = format;
   if (format == Format::svg) {
+    if (request.preset) throw codec::invalid_field("format", "must be json for a preset search (svg draws the sweep and the chain)");
     request.include_cases = false;
     a.text = stability_svg(run_stability(request));
   } else {
-    a.json = run_stability(request);
+    a.json = run_stability(request, presets_dir);
   }
   return a;
 }

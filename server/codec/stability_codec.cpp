@@ -200,6 +200,16 @@ StabilityRequest decode_stability_request(const json& doc) {
   StabilityRequest q;
   if (doc.is_null()) return q;
   ObjectReader r = read_object(doc, "");
+  if (auto name = r.string("preset")) {
+    if (name->empty() || name->size() > kMaxPresetName) throw invalid_field("preset", "must be a preset name of 1 to 64 characters");
+    for (const auto& item : doc.items()) {
+      if (item.key() != "preset") throw invalid_field(item.key(), "is not allowed beside preset (a preset search runs alone)");
+    }
+    q.preset = *name;
+    q.run_chain = false;
+    r.finish();
+    return q;
+  }
   SweepSettings& s = q.sweep;
   s.methods = read_methods(r);
   if (auto x = read_number_list(r, "frequency_ratios", kMaxGridEntries, 1e-6, kMaxFrequencyRatio, "")) s.frequency_ratios = *x;

@@ -28,7 +28,13 @@ struct StabilityRequest {
   ChainSweepSettings chain = default_chain_sweep_settings();
   bool run_chain = true;
   bool include_cases = true;  ///< false: counts and chain limits only (`--summary`)
+  /// A preset's name: its tuned joints' highest stable frequencies (scene/preset_stability.h) instead of
+  /// the sweep and the chain; it runs alone (other sweep fields beside it are refused).
+  std::optional<std::string> preset;
 };
+
+/// Longest `preset` name (app::kMaxPresetNameLength; the preset store checks the characters).
+inline constexpr std::size_t kMaxPresetName = 64;
 
 /// A list of chain solver names (`field` names it in a Problem); empty when `value` is null.
 std::optional<std::vector<ChainSolver>> read_chain_solvers(const nlohmann::json* value, const std::string& field);

@@ -79,9 +79,10 @@ Handler default_stability() {
   };
 }
 
-HttpResponse stability(const HttpRequest& request, Service&) {
+HttpResponse stability(const HttpRequest& request, Service& service) {
   const app::Format format = output_format(request, kStabilityFormats);
-  return answer_response(app::stability_answer(codec::decode_stability_request(codec::parse_json(request.body)), format));
+  return answer_response(app::stability_answer(codec::decode_stability_request(codec::parse_json(request.body)), format,
+                                               service.config().presets_dir));
 }
 
 }  // namespace softtune::http

@@ -1,0 +1,19 @@
+#pragma once
+// The preset search of the stability use case: `softtune stability --preset NAME` and POST
+// /api/v1/stability {"preset": NAME}. Each tuned joint's highest stable frequency in Box2D 2.4
+// (scene/preset_stability.h), costed and refused (422) over the budget before any world is built.
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace softtune::app {
+
+/// Loads preset `name` from `presets_dir` (404 when absent), refuses a modal-tuned one (its joints carry a
+/// modal solve, not their own frequency) and one over the budget, then searches it.
+nlohmann::json run_preset_stability(const std::string& name, const std::string& presets_dir);
+
+/// The per-joint table `softtune stability --preset` prints: joint, asked, highest stable (stable side),
+/// unstable side, kind, evaluations, margin asked / limit.
+std::string preset_limits_table(const nlohmann::json& encoded);
+
+}  // namespace softtune::app
