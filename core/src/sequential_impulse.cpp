@@ -277,7 +277,11 @@ ChainLimit grid_limit(ChainSolver solver, int count, bool warm, double ratio, co
 
 }  // namespace
 
-ChainSweepResult run_chain_sweep(const ChainSweepSettings& s) {
+std::size_t chain_sweep_case_count(const ChainSweepSettings& s) {
+  return s.solvers.size() * s.warm_start.size() * s.mass_ratios.size() * s.iterations.size() * s.frequency_ratios.size();
+}
+
+ChainSweepResult run_chain_sweep(const ChainSweepSettings& s, const ChainProgress& progress) {
   ChainSweepResult out;
   const int steps = std::max(1000, s.observe_steps);
   for (ChainSolver solver : s.solvers) {
@@ -292,6 +296,7 @@ ChainSweepResult run_chain_sweep(const ChainSweepSettings& s) {
             if (c.observed != c.predicted) ++out.mismatches;
             radii.push_back(c.spectral_radius);
             out.cases.push_back(c);
+            if (progress && !progress()) return out;
           }
           if (s.bisect) {
             out.limits.push_back(find_chain_limit(solver, count, warm, ratio, s.damping_ratio, s.h, s.frequency_ratios, steps, radii));

@@ -112,8 +112,29 @@ StepLimit find_step_limit(Method m, double zeta) {
   return out;
 }
 
-SweepResult run_sweep(const SweepSettings& s) {
+namespace {
+
+// k of a frequency-ratio case: k = m omega^2, omega = 2 pi (f h) / h; above max_stiffness it is skipped.
+double frequency_case_stiffness(double ratio, double mass, double h) {
+  const double omega = 2.0 * std::numbers::pi * ratio / h;
+  return mass * omega * omega;
+}
+
+}  // namespace
+
+std::size_t sweep_case_count(const SweepSettings& s) {
+  std::size_t n = 0;
+  for (double h : s.steps) {
+    for (double mass : s.masses) {
+      for (double ratio : s.frequency_ratios) n += frequency_case_stiffness(ratio, mass, h) <= s.max_stiffness ? 1 : 0;
+    }
+  }
+  return (n + s.steps.size() * s.masses.size() * s.stiffnesses.size()) * s.damping_ratios.size() * s.methods.size();
+}
+
+SweepResult run_sweep(const SweepSettings& s, const SweepProgress& progress) {
   SweepResult out;
+  bool go_on = true;
   for (Method m : s.methods) {
     for (double zeta : s.damping_ratios) {
       if (s.step_limits) out.step_limits.push_back(find_step_limit(m, zeta));
@@ -122,17 +143,18 @@ SweepResult run_sweep(const SweepSettings& s) {
   const int n = std::max(1000, s.observe_steps);
   auto add = [&](SweepCase c) {
     for (Method m : s.methods) {
+      if (!go_on) return;
       c.method = m;
       out.cases.push_back(run_sweep_case(c, n));
       count(out.summary, out.cases.back());
+      if (progress) go_on = progress();
     }
   };
   for (double h : s.steps) {
     for (double mass : s.masses) {
       for (double zeta : s.damping_ratios) {
         for (double ratio : s.frequency_ratios) {
-          const double omega = 2.0 * std::numbers::pi * ratio / h;
-          const double k = mass * omega * omega;
+          const double k = frequency_case_stiffness(ratio, mass, h);
           if (k > s.max_stiffness) continue;
           add(make_case(SweepFamily::frequency_ratio, ratio, zeta, mass, k, h));
         }

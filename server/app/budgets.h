@@ -16,4 +16,9 @@ inline constexpr double kCpuSeconds = 2.0;
 /// from. Eight workers at this peak stay within about 0.5 GB.
 inline constexpr double kPeakBytes = 64.0 * 1024 * 1024;
 
+/// CPU time one job may take (POST /api/v1/stability/jobs, /api/v1/check/jobs; app/job_runner.h): the same
+/// estimate as a request's, held to a budget 30 times larger, since a job runs on the one job worker and
+/// never holds a request thread. Peak bytes stay kPeakBytes: a job's answer is kept until it is fetched.
+inline constexpr double kJobCpuSeconds = 60.0;
+
 }  // namespace softtune::app::budgets

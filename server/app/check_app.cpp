@@ -198,10 +198,12 @@ CheckReport run_checks(const std::vector<CheckInput>& all_inputs, const CheckOpt
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   report.cases.resize(jobs.size());
   std::atomic<std::size_t> next{0};
+  if (options.progress) options.progress->set_total(jobs.size());
   auto work = [&] {
     for (std::size_t i = next++; i < jobs.size(); i = next++) {
       const std::size_t k = order[i];
       report.cases[k] = run_case(prepared[jobs[k].prepared], jobs[k], options);
+      if (options.progress && !options.progress->advance()) next.store(jobs.size());
     }
   };
   const int threads = std::clamp(options.jobs, 1, std::min<int>(kMaxCheckJobs, static_cast<int>(std::max<std::size_t>(1, jobs.size()))));

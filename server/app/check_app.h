@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/check_baseline.h"
+#include "app/job_progress.h"
 #include "softtune/scene/expectations.h"
 #include "softtune/scene/scene.h"
 
@@ -44,6 +45,9 @@ struct CheckOptions {
   int jobs = 1;             ///< threads checking cases at once (1..kMaxCheckJobs)
   Shard shard;
   const Baseline* baseline = nullptr;  ///< compare every figure with it (nullptr: no comparison)
+  /// A job's progress: one unit per case; when it is cancelled, cases not yet started are left out
+  /// (nullptr: the synchronous path).
+  JobProgress* progress = nullptr;
 };
 
 /// One preset at one rate.

@@ -34,11 +34,11 @@ double check_work(const std::vector<CheckInput>& inputs, const CheckOptions& opt
   return work;
 }
 
-void require_check_budget(double work, double budget, const std::string& fields) {
+void require_check_budget(double work, double budget, const std::string& fields, const std::string& instead) {
   if (work <= budget) return;
   char text[320];
-  std::snprintf(text, sizeof text, "the check would take about %.3g body-steps (frames x substeps x (bodies + joints), per case), more than the %.3g one request may (about 2 s of one core): ask for fewer presets, scenes or rates", work, budget);
-  throw codec::Problem(422, "Too much work", fields, text);
+  std::snprintf(text, sizeof text, "the check would take about %.3g body-steps (frames x substeps x (bodies + joints), per case), more than the %.3g allowed (about %g s of one core): ask for fewer presets, scenes or rates", work, budget, budget / kCheckWorkPerSecond);
+  throw codec::Problem(422, "Too much work", fields, instead.empty() ? std::string(text) : std::string(text) + "; " + instead);
 }
 
 }  // namespace softtune::app

@@ -6,6 +6,7 @@
 #include "app/check_cost.h"
 #include "app/check_junit.h"
 #include "app/preset_store.h"
+#include "app/request_cost.h"
 #include "codec/list_reader.h"
 #include "codec/problem.h"
 #include "softtune/scene/limits.h"
@@ -40,14 +41,14 @@ void read_check_options(ObjectReader& r, CheckOptions& options) {
   if (auto s = r.string("shard")) options.shard = parse_shard(*s, r.field("shard"));
 }
 
-CheckAnswer run_check_request(const json& request, const std::string& presets_dir) {
+CheckPlan plan_check_request(const json& request, const std::string& presets_dir) {
   ObjectReader r = read_object(request, "");
-  CheckOptions options;
+  CheckPlan plan;
+  CheckOptions& options = plan.options;
   read_check_options(r, options);
-  CheckAnswer answer;
-  if (auto f = r.choice("format", {"json", "junit"})) answer.junit = *f == 1;
+  if (auto f = r.choice("format", {"json", "junit"})) plan.junit = *f == 1;
 
-  std::vector<CheckInput> inputs;
+  std::vector<CheckInput>& inputs = plan.inputs;
   std::set<std::string> names;
   if (const json* list = r.raw("presets")) {
     if (!list->is_array() || list->empty() || list->size() > kMaxCheckPresets) {
@@ -99,21 +100,40 @@ CheckAnswer run_check_request(const json& request, const std::string& presets_di
       inputs.push_back(std::move(in));
     }
   }
-  Baseline baseline;
-  if (const json* b = r.raw("baseline")) {
-    baseline = decode_baseline(*b, "baseline");
-    options.baseline = &baseline;
-  }
+  if (const json* b = r.raw("baseline")) plan.baseline = decode_baseline(*b, "baseline");
   r.finish();
+  plan.work = check_work(inputs, options);
+  return plan;
+}
 
-  require_check_budget(check_work(inputs, options), kMaxCheckWork, "presets, scenes, fps, substeps");
-  const CheckReport report = run_checks(inputs, options);
+CheckAnswer run_check_plan(const CheckPlan& plan, JobProgress* progress) {
+  CheckOptions options = plan.options;
+  if (plan.baseline) options.baseline = &*plan.baseline;
+  options.progress = progress;
+  const CheckReport report = run_checks(plan.inputs, options);
+  if (progress && progress->cancelled()) throw JobCancelled{};
+  CheckAnswer answer;
+  answer.junit = plan.junit;
   if (answer.junit) {
     answer.xml = junit_xml(report);
   } else {
     answer.json = check_report_json(report);
   }
   return answer;
+}
+
+CheckAnswer run_check_request(const json& request, const std::string& presets_dir) {
+  const CheckPlan plan = plan_check_request(request, presets_dir);
+  require_check_budget(plan.work, kMaxCheckWork, kCheckCostFields, job_route_hint(kCheckJobsRoute));
+  return run_check_plan(plan, nullptr);
+}
+
+CheckPlan plan_check_job(const json& request, const std::string& presets_dir) {
+  CheckPlan plan = plan_check_request(request, presets_dir);
+  // A job's result is the JSON report; JUnit XML is the synchronous route's.
+  if (plan.junit) throw invalid_field("format", "a check job answers the JSON report: ask \"format\": \"json\" (or leave it out), or POST /api/v1/check for JUnit XML");
+  require_check_budget(plan.work, kMaxCheckJobWork, kCheckCostFields);
+  return plan;
 }
 
 }  // namespace softtune::app

@@ -33,4 +33,25 @@ struct CheckAnswer {
 /// kMaxCheckWork.
 CheckAnswer run_check_request(const nlohmann::json& request, const std::string& presets_dir);
 
+/// A check request read and its work estimated, not yet run (the job route queues it).
+struct CheckPlan {
+  std::vector<CheckInput> inputs;
+  CheckOptions options;  ///< its baseline pointer unset: run_check_plan points it at `baseline`
+  std::optional<Baseline> baseline;
+  bool junit = false;
+  double work = 0.0;  ///< body-steps (check_cost.h)
+};
+
+/// The fields a check's budget refusal names, and the job route it points to.
+inline constexpr const char* kCheckCostFields = "presets, scenes, fps, substeps";
+inline constexpr const char* kCheckJobsRoute = "/api/v1/check/jobs";
+
+/// Reads and validates a request as run_check_request does (the same 4xx problems), checking no budget.
+CheckPlan plan_check_request(const nlohmann::json& request, const std::string& presets_dir);
+/// Runs a plan; with `progress`, one unit per case, JobCancelled when cancelled.
+CheckAnswer run_check_plan(const CheckPlan& plan, JobProgress* progress);
+/// POST /api/v1/check/jobs: plan_check_request, then refused over kMaxCheckJobWork (422 naming the same
+/// fields) and for "format": "junit" (422 naming `format`: a job's result is the JSON report).
+CheckPlan plan_check_job(const nlohmann::json& request, const std::string& presets_dir);
+
 }  // namespace softtune::app

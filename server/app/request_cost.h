@@ -20,10 +20,25 @@ struct RequestCost {
   std::string work;
 };
 
-/// Throws codec::Problem 422 when the estimate is over budgets::kCpuSeconds or budgets::kPeakBytes: its
+/// What an estimate is held to: a request's budget (budgets::kCpuSeconds) or a job's (kJobCpuSeconds).
+struct Budget {
+  double cpu_seconds = 0.0;  ///< s
+  double peak_bytes = 0.0;   ///< B
+  std::string per;           ///< "request" or "job", for the detail
+  /// Where a larger request can go instead ("run it as a job: POST /api/v1/stability/jobs ..."); may be empty.
+  std::string instead;
+};
+/// budgets::kCpuSeconds and kPeakBytes per request, with the way out `instead`.
+Budget request_budget(std::string instead = "");
+/// "over HTTP, run it as a job: POST `route` takes the same body, within 60 s of CPU, and reports progress".
+std::string job_route_hint(const std::string& route);
+/// budgets::kJobCpuSeconds and kPeakBytes per job.
+Budget job_budget();
+
+/// Throws codec::Problem 422 when the estimate is over the budget's CPU time or peak bytes: its
 /// `field` is the first driver, its detail names every driver, the estimate and the budget, and its
 /// extension members carry them as data ("fields", "estimated_cpu_seconds", "budget_cpu_seconds",
 /// "estimated_peak_bytes", "budget_peak_bytes").
-void require_within_budget(const RequestCost& cost);
+void require_within_budget(const RequestCost& cost, const Budget& budget = request_budget());
 
 }  // namespace softtune::app

@@ -14,20 +14,44 @@ namespace softtune::app {
 
 using nlohmann::json;
 
-json run_stability(const codec::StabilityRequest& q, const std::string& presets_dir) {
-  if (q.preset) return run_preset_stability(*q.preset, presets_dir.empty() ? resolve_presets_dir() : presets_dir);
-  require_within_budget(stability_cost(q));
+namespace {
+
+// The sweep and the chain; with `progress`, one unit per case of either, stopping when it is cancelled.
+json sweep_and_encode(const codec::StabilityRequest& q, JobProgress* progress) {
   StageList stages;
   stages.add(Stage::validate);
   stages.add(Stage::stability_sweep);
-  const SweepResult sweep = run_sweep(q.sweep);
+  std::function<bool()> hook;
+  if (progress) {
+    progress->set_total(sweep_case_count(q.sweep) + (q.run_chain ? chain_sweep_case_count(q.chain) : 0));
+    hook = [progress] { return progress->advance(); };
+  }
+  const SweepResult sweep = run_sweep(q.sweep, hook);
+  if (progress && progress->cancelled()) throw JobCancelled{};
   std::optional<ChainSweepResult> chain;
   if (q.run_chain) {
     stages.add(Stage::sequential_impulse_chain);
-    chain = run_chain_sweep(q.chain);
+    chain = run_chain_sweep(q.chain, hook);
+    if (progress && progress->cancelled()) throw JobCancelled{};
   }
   return codec::encode_stability_result(q, sweep, chain, stages);
 }
+
+}  // namespace
+
+json run_stability(const codec::StabilityRequest& q, const std::string& presets_dir) {
+  if (q.preset) return run_preset_stability(*q.preset, presets_dir.empty() ? resolve_presets_dir() : presets_dir);
+  require_within_budget(stability_cost(q), request_budget(job_route_hint(kStabilityJobsRoute)));
+  return sweep_and_encode(q, nullptr);
+}
+
+void require_stability_job_budget(const codec::StabilityRequest& q) {
+  // A preset search reports no progress of its own and fits the request budget: it runs on the synchronous route.
+  if (q.preset) throw codec::invalid_field("preset", "a preset search runs on POST /api/v1/stability; a job runs a sweep");
+  require_within_budget(stability_cost(q), job_budget());
+}
+
+json run_stability_job(const codec::StabilityRequest& q, JobProgress& progress) { return sweep_and_encode(q, &progress); }
 
 json run_stability(const json& doc) { return run_stability(codec::decode_stability_request(doc)); }
 

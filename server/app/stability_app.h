@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/answer.h"
+#include "app/job_progress.h"
 #include "codec/stability_codec.h"
 #include "plot/plot_model.h"
 
@@ -17,6 +18,16 @@ namespace softtune::app {
 /// (empty: resolve_presets_dir()).
 nlohmann::json run_stability(const codec::StabilityRequest& request, const std::string& presets_dir = {});
 nlohmann::json run_stability(const nlohmann::json& doc);
+
+/// The job route of the stability contract, which the synchronous route's budget refusal points to.
+inline constexpr const char* kStabilityJobsRoute = "/api/v1/stability/jobs";
+
+/// The job form (POST /api/v1/stability/jobs): refused (422 naming the fields) over the job budget (budgets.h),
+/// and for a preset search (422 naming `preset`: it runs on the synchronous route)...
+void require_stability_job_budget(const codec::StabilityRequest& request);
+/// ...then, on the job worker, exactly the JSON run_stability answers, one progress unit per sweep and chain
+/// case; throws JobCancelled when cancelled. Checks no budget (the job route checked it before queueing).
+nlohmann::json run_stability_job(const codec::StabilityRequest& request, JobProgress& progress);
 
 /// The answer in `format` (json or svg); the SVG needs no per-case list, so it leaves the cases out. A
 /// preset search answers JSON only (422 on `format` for svg).

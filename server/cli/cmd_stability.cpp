@@ -54,7 +54,10 @@ int run_stability(const Args& args) {
       }
       return out.at("summary").at("passed").get<bool>() ? kExitOk : kExitFailed;
     }
-    const nlohmann::json out = app::run_stability(q);
+    // The CLI holds no server thread: it runs what a job may (the job budget, 60 s), in process.
+    app::require_stability_job_budget(q);
+    app::JobProgress progress;
+    const nlohmann::json out = app::run_stability_job(q, progress);
     if (format == app::Format::svg) {
       std::cout << app::stability_svg(out);
     } else if (flags.has("summary")) {

@@ -200,7 +200,7 @@ class LibraryServer final : public httplib::Server {
   // not complete in time.
   std::string refusal(Refusal why, std::string_view received) {
     const Clock::time_point start = Clock::now();
-    GateRefusal answer = gate_refusal(why, received, options_);
+    GateRefusal answer = gate_refusal(why, received, options_, service_.config().cors);
     finish(answer.method, answer.path, answer.status, start);
     return std::move(answer.response);
   }

@@ -7,6 +7,7 @@
 #include "app/check_cost.h"
 #include "app/check_request.h"
 #include "app/budgets.h"
+#include "app/job_runner.h"
 #include "app/preset_store.h"
 #include "app/preview_service.h"
 #include "codec/identify_codec.h"
@@ -75,6 +76,12 @@ std::vector<NumericLimit> numeric_limits() {
       {"max_header_line_bytes", D(hl::kMaxHeaderLineBytes)},
       {"request_budget_cpu_s", app::budgets::kCpuSeconds},
       {"request_budget_peak_bytes", app::budgets::kPeakBytes},
+      {"job_budget_cpu_s", app::budgets::kJobCpuSeconds},
+      {"check_job_max_work", app::kMaxCheckJobWork},
+      {"max_queued_jobs", D(app::kMaxQueuedJobs)},
+      {"max_kept_jobs", D(app::kMaxKeptJobs)},
+      {"job_kept_s", D(app::kKeepJobsFor.count())},
+      {"max_kept_job_bytes", D(app::kMaxKeptJobBytes)},
       {"scene_max_duration_s", sl::kMaxDurationS},
       {"scene_max_steps", sl::kMaxSceneSteps},
       {"scene_max_body_steps", sl::kMaxBodySteps},
@@ -164,6 +171,18 @@ std::vector<LimitRow> request_rows() {
        "`server/app/budgets.h` `kCpuSeconds`, `kPeakBytes`; each contract's estimate in `server/app/*_cost.h`",
        "422 `request-over-budget` naming the fields that drive the cost (`field` the first, `fields` all) with "
        "`estimated_cpu_seconds`, `budget_cpu_seconds`, `estimated_peak_bytes`, `budget_peak_bytes`"},
+      {"cost of one job",
+       "about " + figure(app::budgets::kJobCpuSeconds) + " s of CPU on one core (check: " + figure(app::kMaxCheckJobWork) +
+           " body-steps) and " + bytes(static_cast<std::size_t>(app::budgets::kPeakBytes)) +
+           " at its peak, by the same estimates (`POST /api/v1/stability/jobs`, `POST /api/v1/check/jobs`)",
+       "`server/app/budgets.h` `kJobCpuSeconds`, `server/app/check_cost.h` `kMaxCheckJobWork`",
+       "422 naming the fields that drive the cost, before the job is queued"},
+      {"jobs",
+       figure(app::kMaxQueuedJobs) + " queued or running at once, run one at a time on one worker thread; " +
+           figure(app::kMaxKeptJobs) + " finished jobs kept, " + bytes(app::kMaxKeptJobBytes) +
+           " of their results as JSON text, each for at most " + figure(static_cast<int>(app::kKeepJobsFor.count())) + " s",
+       "`server/app/job_runner.h` `kMaxQueuedJobs`, `kMaxKeptJobs`, `kMaxKeptJobBytes`, `kKeepJobsFor`",
+       "503 with `Retry-After: 5` when the queue is full; a forgotten job's status is a 404"},
       {"query parameters", "only those a route reads (`format` on accuracy and stability), each once",
        "`server/http/routes.cpp` (each row's list), `server/http/service.cpp`", "422 naming the parameter"},
       {"preview ids and frame numbers", "64 lower-case hex digits; frame numbers without sign or leading zeros",

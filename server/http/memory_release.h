@@ -45,6 +45,10 @@ class MemoryRelease {
   std::atomic<std::size_t> trims_{0};
 };
 
+/// Returns every arena's free pages to the system now (malloc_trim(0)); the job worker calls it after
+/// each job (app/job_runner.h), whose sweep freed its tree on that thread.
+void trim_allocator();
+
 /// The process's resident set size in bytes (VmRSS of /proc/self/status), 0 when unknown.
 std::size_t resident_bytes();
 

@@ -7,6 +7,7 @@
 #include "codec/tune_codec.h"
 #include "http/capability_routes.h"
 #include "http/identify_routes.h"
+#include "http/job_routes.h"
 #include "http/check_routes.h"
 #include "http/openapi.h"
 #include "http/preview_routes.h"
@@ -99,6 +100,7 @@ std::vector<Route> service_routes() {
       {"GET", "/metrics", metrics},
   };
   for (Route& r : preview_routes()) routes.push_back(std::move(r));
+  for (Route& r : job_routes()) routes.push_back(std::move(r));
   routes.push_back({"GET", "/{path...}", static_page, {"*"}});  // the static page's catch-all comes last
   return routes;
 }

@@ -1,5 +1,8 @@
 #include "http/transport_refusals.h"
 
+#include <algorithm>
+#include <cctype>
+
 #include "codec/problem.h"
 #include "http/limits.h"
 #include "http/request_policy.h"
@@ -81,7 +84,27 @@ HttpResponse internal_error_refusal() {
   return problem_response(codec::Problem(500, "Internal error", "", "the request could not be served"));
 }
 
-GateRefusal gate_refusal(Refusal why, std::string_view received, const TransportOptions& options) {
+std::optional<std::string> raw_header(std::string_view head, std::string_view name) {
+  std::size_t at = head.find("\r\n");  // past the request line
+  while (at != std::string_view::npos) {
+    const std::size_t start = at + 2, end = head.find("\r\n", start);
+    if (end == std::string_view::npos || end == start) return std::nullopt;  // a partial line, or the head's end
+    const std::string_view line = head.substr(start, end - start);
+    const std::size_t colon = line.find(':');
+    if (colon == name.size() && std::equal(name.begin(), name.end(), line.begin(), [](char a, char b) {
+          return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+        })) {
+      std::string_view value = line.substr(colon + 1);
+      while (!value.empty() && (value.front() == ' ' || value.front() == '\t')) value.remove_prefix(1);
+      while (!value.empty() && (value.back() == ' ' || value.back() == '\t')) value.remove_suffix(1);
+      return std::string(value);
+    }
+    at = end;
+  }
+  return std::nullopt;
+}
+
+GateRefusal gate_refusal(Refusal why, std::string_view received, const TransportOptions& options, const CorsPolicy& cors) {
   const codec::Problem p =
       why == Refusal::busy
           ? codec::Problem(503, "Service unavailable", "",
@@ -97,9 +120,15 @@ GateRefusal gate_refusal(Refusal why, std::string_view received, const Transport
   out.method = line.substr(0, line.find(' '));
   const std::size_t path_start = line.find(' ') == std::string_view::npos ? line.size() : line.find(' ') + 1;
   out.path = line.substr(path_start, line.find(' ', path_start) - path_start);
+  std::string cors_lines;
+  if (cors.enabled()) {
+    HttpResponse headers;
+    add_cors_headers(cors, raw_header(received, "Origin"), headers);
+    for (const auto& [name, value] : headers.headers) cors_lines += name + ": " + value + "\r\n";
+  }
   out.response = "HTTP/1.1 " + std::to_string(p.status) +
                  (why == Refusal::busy ? " Service Unavailable" : " Request Timeout") +
-                 "\r\nContent-Type: application/problem+json\r\n" + (why == Refusal::busy ? "Retry-After: 1\r\n" : "") +
+                 "\r\nContent-Type: application/problem+json\r\n" + (why == Refusal::busy ? "Retry-After: 1\r\n" : "") + cors_lines +
                  "Connection: close\r\nContent-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body;
   return out;
 }

@@ -22,6 +22,7 @@
 
 #include "http/connection_gate.h"
 #include "http/http_transport.h"
+#include "http/cors.h"
 #include "http/http_types.h"
 #include "http/transport_stream.h"
 
@@ -49,6 +50,13 @@ struct GateRefusal {
   std::string_view method, path;  ///< from the request line received so far (views into `received`)
   std::string response;           ///< status line, headers (Connection: close) and problem+json body
 };
-GateRefusal gate_refusal(Refusal why, std::string_view received, const TransportOptions& options);
+/// With `cors` on, the answer carries the CORS headers for the Origin header of the head received so far
+/// (every answer does, cors.h; a 408's head may be cut short, and then it has them when Origin arrived).
+GateRefusal gate_refusal(Refusal why, std::string_view received, const TransportOptions& options,
+                         const CorsPolicy& cors = {});
+
+/// The value of header `name` (case-insensitive, RFC 9110 5.1) in a raw request head, possibly incomplete:
+/// only whole lines count. Nullopt when absent.
+std::optional<std::string> raw_header(std::string_view head, std::string_view name);
 
 }  // namespace softtune::http

@@ -129,5 +129,31 @@ TEST(StabilitySweep, ObservedRadiusOfADeeplyDecayedRunMatchesTheStepMatrix) {
   }
 }
 
+// The count a job reports as its total is the number of cases the sweep runs, frequency cases above
+// max_stiffness left out (k = m (2 pi f h / h)^2: at f h = 2, h = 1e-3, m = 1 kg, k = 1.6e8 N/m).
+TEST(StabilitySweep, CaseCountIsTheCasesRunAndProgressStopsTheSweep) {
+  SweepSettings s = default_sweep_settings();
+  s.methods = {Method::soft, Method::semi_implicit_euler};
+  s.frequency_ratios = {0.01, 0.5, 2.0};
+  s.stiffnesses = {1.0, 1e4};
+  s.damping_ratios = {0.0, 1.0};
+  s.masses = {1.0};
+  s.steps = {1e-3, 0.1};
+  s.max_stiffness = 1e8;
+  s.observe_steps = 1000;
+  const SweepResult all = run_sweep(s);
+  // h = 1e-3: f h = 2 gives 1.6e8 > 1e8 (skipped), 0.5 gives 9.9e6; h = 0.1 keeps all three.
+  EXPECT_EQ(all.cases.size(), 2u * 2u * ((2 + 2) + (3 + 2)));
+  EXPECT_EQ(sweep_case_count(s), all.cases.size());
+
+  std::size_t calls = 0;
+  const SweepResult stopped = run_sweep(s, [&] { return ++calls < 5; });
+  EXPECT_EQ(calls, 5u);
+  EXPECT_EQ(stopped.cases.size(), 5u);
+  std::size_t every = 0;
+  run_sweep(s, [&] { return ++every > 0; });
+  EXPECT_EQ(every, all.cases.size());
+}
+
 }  // namespace
 }  // namespace softtune

@@ -226,6 +226,18 @@ TEST(Hardening, SlowClientIsCutOffAtTheRequestDeadline) {
                                                         json::parse(body_of(answer))), "");
 }
 
+// The gate's 408 is an answer like any other: with --cors-origin it carries the CORS headers.
+TEST(Hardening, TheRequestDeadlinesAnswerCarriesCorsHeaders) {
+  softtune::http::ServiceConfig config = softtune::http::testing::web_config();
+  config.cors.origins = {"https://tools.example"};
+  TestServer s(short_timeouts(300, 1500), config);
+  RawConnection slow(s.port());
+  ASSERT_TRUE(slow.send("GET /api/v1/health HTTP/1.1\r\nHost: t\r\nOrigin: https://tools.example\r\n"));
+  const std::string answer = slow.receive(std::chrono::milliseconds(2000));
+  EXPECT_EQ(status_of(answer), 408) << answer;
+  EXPECT_NE(answer.find("\r\nAccess-Control-Allow-Origin: https://tools.example\r\n"), std::string::npos) << answer;
+}
+
 // With one worker, clients that send their heads slowly, or keep idle connections open, must not keep
 // anyone else waiting: they wait in the gate, not in a worker.
 TEST(Hardening, SlowHeadsAndIdleConnectionsDoNotHoldWorkers) {

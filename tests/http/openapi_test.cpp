@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "app/budgets.h"
+#include "app/job_runner.h"
 #include "app/accuracy_app.h"
 #include "app/modes_app.h"
 #include "app/simulate_app.h"
@@ -148,7 +149,13 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["check_max_rates"], softtune::scene::limits::kMaxRates);
   EXPECT_EQ(x["request_budget_cpu_s"], softtune::app::budgets::kCpuSeconds);
   EXPECT_EQ(x["request_budget_peak_bytes"], softtune::app::budgets::kPeakBytes);
-  EXPECT_EQ(x.size(), 44u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x["job_budget_cpu_s"], softtune::app::budgets::kJobCpuSeconds);
+  EXPECT_EQ(x["check_job_max_work"], softtune::app::kMaxCheckJobWork);
+  EXPECT_EQ(x["max_queued_jobs"], softtune::app::kMaxQueuedJobs);
+  EXPECT_EQ(x["max_kept_jobs"], softtune::app::kMaxKeptJobs);
+  EXPECT_EQ(x["job_kept_s"], softtune::app::kKeepJobsFor.count());
+  EXPECT_EQ(x["max_kept_job_bytes"], softtune::app::kMaxKeptJobBytes);
+  EXPECT_EQ(x.size(), 50u) << "a limit is documented that this test does not check";
 }
 
 TEST(OpenApi, EveryRefResolves) {

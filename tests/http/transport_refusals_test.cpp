@@ -78,6 +78,26 @@ TEST(TransportRefusals, TheGatesAnswersAreWholeResponsesThatClose) {
   EXPECT_EQ(gate_refusal(Refusal::timeout, "", options).method, "");
 }
 
+// With --cors-origin, the gate's own answers carry the CORS headers too (cors.h: every answer does), for
+// the Origin of the head received so far; without an Origin, or with CORS off, they carry none.
+TEST(TransportRefusals, TheGatesAnswersCarryCorsHeaders) {
+  TransportOptions options;
+  CorsPolicy cors;
+  cors.origins = {"https://tools.example"};
+  const std::string head = "POST /api/v1/tune HTTP/1.1\r\nHost: x\r\norigin:  https://tools.example \r\n";
+  for (Refusal why : {Refusal::busy, Refusal::timeout}) {
+    const std::string r = gate_refusal(why, head, options, cors).response;
+    EXPECT_NE(r.find("\r\nAccess-Control-Allow-Origin: https://tools.example\r\n"), std::string::npos) << r;
+    EXPECT_NE(r.find("\r\nVary: Origin\r\n"), std::string::npos) << r;
+    EXPECT_EQ(gate_refusal(why, head, options).response.find("Access-Control"), std::string::npos);
+    EXPECT_EQ(gate_refusal(why, "GET / HTTP/1.1\r\nOrigin: https://evil.example\r\n", options, cors).response.find("Access-Control"),
+              std::string::npos);
+  }
+  EXPECT_EQ(raw_header("GET / HTTP/1.1\r\nOrigin: a\r\nOrig", "Origin"), "a");
+  EXPECT_FALSE(raw_header("GET / HTTP/1.1\r\nOrigin: a", "Origin"));  // a line cut short does not count
+  EXPECT_FALSE(raw_header("GET / HTTP/1.1\r\n\r\nOrigin: a\r\n", "Origin"));  // the body is not the head
+}
+
 
 // RFC 9110 15.6.2: a method the server does not implement for any resource is 501, not a malformed
 // request; methods are case-sensitive, so a lower-case "get" is such a method too.

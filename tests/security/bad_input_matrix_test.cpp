@@ -167,8 +167,9 @@ TEST_F(BadInputMatrix, EveryDocumentedParameterRefusesHostileValuesNamingIt) {
           if (auto at = url.find("{id}"); at != std::string::npos) url.replace(at, 4, id);
           if (auto at = url.find("{n}"); at != std::string::npos) url.replace(at, 3, "0");
           SCOPED_TRACE(method + " " + url.substr(0, 200));
-          auto res = method == "get" ? client.Get(url.c_str())
-                                     : client.Post(url.c_str(), bodies.at(pattern), "application/json");
+          auto res = method == "get"      ? client.Get(url.c_str())
+                     : method == "delete" ? client.Delete(url.c_str())
+                                          : client.Post(url.c_str(), bodies.at(pattern), "application/json");
           ASSERT_TRUE(res);
           EXPECT_GE(res->status, 400);
           EXPECT_LT(res->status, 500);
@@ -217,6 +218,19 @@ TEST_F(BadInputMatrix, CostQueryConditionalAndIdCasesEndAsTheRfcAndTheBudgetAsk)
       {"GET", "/api/v1/preview/" + std::string(5000, 'a'), "", 404, "id"},
       {"GET", "/api/v1/preview/" + std::string(64, 'A') + "/0.png", "", 404, "id"},
       {"GET", "/api/v1/preview/" + std::string(63, 'a') + "/filmstrip.png", "", 404, "id"},
+      // The job routes: the synchronous routes' checks, the job budget, and ids in their one form.
+      {"POST", "/api/v1/stability/jobs", R"({"observe_steps": 100000, "masses": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16]})", 422, "*"},
+      {"POST", "/api/v1/stability/jobs", R"({"methods": ["soft", "rk4"]})", 422, "methods.1"},
+      {"POST", "/api/v1/stability/jobs", R"({"observe_steps": 1e309})", 422, "observe_steps"},
+      {"POST", "/api/v1/stability/jobs?format=svg", sweep, 422, "format"},
+      {"POST", "/api/v1/check/jobs", R"({"presets": ["mouse"], "format": "junit"})", 422, "format"},
+      {"POST", "/api/v1/check/jobs", R"({"presets": ["mouse"], "fps": [0]})", 422, "fps.0"},
+      {"POST", "/api/v1/check/jobs", R"({"presets": ["mouse"], "bogus": 1})", 422, "bogus"},
+      {"POST", "/api/v1/check/jobs", R"({"fps": [30, 60, 120, 144, 240, 480, 500, 600, 700, 800, 900, 960, 1000, 1100, 1200, 1440], "substeps": [1, 2, 4, 8, 16, 32, 64]})", 422, "presets, scenes, fps, substeps"},
+      {"GET", "/api/v1/jobs/" + std::string(5000, 'a'), "", 404, "id"},
+      {"DELETE", "/api/v1/jobs/J0123456789ABCDEF", "", 404, "id"},
+      {"GET", "/api/v1/jobs/j0123456789abcdef0", "", 404, "id"},
+      {"GET", "/api/v1/jobs/j0123456789abcdef", "", 404, "id"},
   };
   // A finished preview for the conditional and frame-number cases.
   auto started = client.Post("/api/v1/preview", R"({"preset": "oscillator", "frames": 2, "size": "32x18", "wait": true})",
@@ -229,7 +243,9 @@ TEST_F(BadInputMatrix, CostQueryConditionalAndIdCasesEndAsTheRfcAndTheBudgetAsk)
   std::size_t ran = 0;
   for (const Expect& e : cases) {
     SCOPED_TRACE(e.method + " " + e.path.substr(0, 120) + " " + e.body.substr(0, 120));
-    auto res = e.method == "GET" ? client.Get(e.path.c_str()) : client.Post(e.path.c_str(), e.body, "application/json");
+    auto res = e.method == "GET"      ? client.Get(e.path.c_str())
+               : e.method == "DELETE" ? client.Delete(e.path.c_str())
+                                      : client.Post(e.path.c_str(), e.body, "application/json");
     ASSERT_TRUE(res);
     EXPECT_EQ(res->status, e.status) << res->body.substr(0, 300);
     EXPECT_LT(res->body.size(), 2000u) << "a refusal echoes no more than the valid form";

@@ -133,7 +133,14 @@ struct ChainSweepResult {
   std::size_t unconfirmed_limits = 0;  ///< limits whose bracket sides the simulation contradicts
 };
 
-ChainSweepResult run_chain_sweep(const ChainSweepSettings& settings);
+/// Called after each chain case (one f h of one solver, count, warm start and mass ratio; the bisection of
+/// a limit after the last of its scan); returning false stops the sweep there (see SweepProgress).
+using ChainProgress = std::function<bool()>;
+
+ChainSweepResult run_chain_sweep(const ChainSweepSettings& settings, const ChainProgress& progress = {});
+
+/// Cases run_chain_sweep runs: solvers x warm starts x mass ratios x counts x frequency ratios.
+std::size_t chain_sweep_case_count(const ChainSweepSettings& settings);
 
 /// One limit: `solver` with `count` and warm starting, at mass ratio and zeta, step h; bracketed on the
 /// ascending f h `scan` (when `scan_radii` is given, the spectral radii already computed at the scan's

@@ -8,7 +8,9 @@
 // is rho(M)^(1/N) (Gelfand: growth over N steps, rooted). Any non-finite state is an observed blow-up.
 // Both are classified with classify_spectral_radius(): within 1 +- kMarginalBand is "marginal".
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -96,8 +98,17 @@ StepLimit find_step_limit(Method m, double damping_ratio);
 /// Predicts and observes one case. `c` carries the method and parameters; the rest is filled in.
 SweepCase run_sweep_case(SweepCase c, int observe_steps);
 
-/// Every case of the grid.
-SweepResult run_sweep(const SweepSettings& settings);
+/// Called after each case a sweep finishes (its natural unit); returning false stops the sweep there, and
+/// the result holds the cases so far. Lets a job report progress and be cancelled (server/app/job_runner.h);
+/// empty: never called (one test of an empty std::function per case, nothing measurable).
+using SweepProgress = std::function<bool()>;
+
+/// Every case of the grid; `progress` after each one.
+SweepResult run_sweep(const SweepSettings& settings, const SweepProgress& progress = {});
+
+/// Cases run_sweep runs for `settings`: methods x steps x masses x damping ratios x (the frequency ratios
+/// whose stiffness is within max_stiffness + stiffnesses), the same skip rule as run_sweep's.
+std::size_t sweep_case_count(const SweepSettings& settings);
 
 /// Observed per-step spectral radius of a method by simulation (see the header comment); empty when
 /// non-finite.
