@@ -30,7 +30,7 @@ TEST(ChainDesign, FewestCountHoldsWithMarginAndOneFewerDoesNot) {
     q.mass_ratio = 1e3;
     q.frequency_hz = frequency;
     q.margin = 1.25;
-    q.solvers.push_back({solver, 1, true, kH});
+    q.solvers.push_back({solver, 1, true, kH, std::nullopt, 1});
     const std::vector<ChainDesign> answer = design_chain(q);
     ASSERT_EQ(answer.size(), 1u);
     for (const ChainDesign& d : answer) {
@@ -60,7 +60,7 @@ TEST(ChainDesign, LimitWithTheUsersSettingsHoldsUnderSimulation) {
   ChainDesignRequest q;
   q.mass_ratio = 100.0;
   q.frequency_hz = 12.0;
-  q.solvers = {{ChainSolver::box2d_v2_4, 2, true, kH}, {ChainSolver::jolt, 4, true, kH, 0.0}};
+  q.solvers = {{ChainSolver::box2d_v2_4, 2, true, kH, std::nullopt, 1}, {ChainSolver::jolt, 4, true, kH, 0.0, 1}};
   for (const ChainDesign& d : design_chain(q)) {
     ASSERT_EQ(d.limit.kind, LimitKind::found);
     EXPECT_TRUE(d.limit.confirmed);

@@ -252,7 +252,9 @@ TEST_F(BadInputMatrix, CostQueryConditionalAndIdCasesEndAsTheRfcAndTheBudgetAsk)
     if (!e.field.empty()) {
       const json problem = json::parse(res->body, nullptr, false);
       ASSERT_TRUE(problem.is_object()) << res->body.substr(0, 300);
-      if (e.field != "*") EXPECT_EQ(problem.value("field", ""), e.field) << res->body.substr(0, 300);
+      if (e.field != "*") {
+        EXPECT_EQ(problem.value("field", ""), e.field) << res->body.substr(0, 300);
+      }
       EXPECT_FALSE(problem.value("field", "").starts_with("/")) << "a dotted path, never a JSON pointer";
     }
     ++ran;
