@@ -12,7 +12,7 @@
 
 set(SOFTTUNE_TEST_OPTIMISATION -O1)
 
-add_library(softtune_test_pch OBJECT ${CMAKE_CURRENT_LIST_DIR}/test_pch_anchor.cpp)
+add_library(softtune_test_pch OBJECT ${CMAKE_CURRENT_LIST_DIR}/pch_anchor.cpp)
 target_link_libraries(softtune_test_pch PRIVATE GTest::gtest nlohmann_json::nlohmann_json Eigen3::Eigen)
 target_compile_options(softtune_test_pch PRIVATE ${SOFTTUNE_TEST_OPTIMISATION})
 target_precompile_headers(softtune_test_pch PRIVATE <gtest/gtest.h> <nlohmann/json.hpp> <Eigen/Dense>)
