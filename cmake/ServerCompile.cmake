@@ -1,4 +1,4 @@
-# The server's libraries (codec, app, http, cli) share one precompiled nlohmann-json: nearly every one of
+# The codec, scene codec and app libraries share one precompiled nlohmann-json: nearly every one of
 # their sources includes it, and parsing it was a large part of each one's compile. Same compiler and flags
 # as the libraries (the build type's), so REUSE_FROM holds; no header in it depends on a target's own
 # definitions.
