@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "codec/json_reader.h"
+#include "codec/problem.h"
 
 namespace softtune::codec {
 
@@ -17,5 +18,23 @@ std::optional<std::vector<double>> read_number_list(ObjectReader& r, std::string
 /// The same for integers.
 std::optional<std::vector<int>> read_integer_list(ObjectReader& r, std::string_view key, std::size_t max_entries,
                                                   int lo, int hi);
+
+/// The array of objects at `key`: each read by `read(reader, "key.i")`, then finished (its unknown fields
+/// refused). Absent: "is required" when `required`, else nothing is read.
+template <typename Read>
+void read_object_list(ObjectReader& parent, std::string_view key, bool required, Read read) {
+  const nlohmann::json* list = parent.raw(key);
+  if (!list) {
+    if (required) throw invalid_field(parent.field(key), "is required");
+    return;
+  }
+  if (!list->is_array()) throw invalid_field(parent.field(key), "must be an array");
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string path = parent.field(key) + "." + std::to_string(i);
+    ObjectReader r = read_object((*list)[i], path);
+    read(r, path);
+    r.finish();
+  }
+}
 
 }  // namespace softtune::codec

@@ -1,6 +1,7 @@
 #include "codec/modes_codec.h"
 
 #include "codec/json_writer.h"
+#include "codec/list_reader.h"
 #include "codec/problem.h"
 #include "codec/scene_codec.h"
 #include "codec/tune_codec.h"
@@ -25,18 +26,6 @@ std::string_view coordinate_name(modes::Dof d) {
   return "";
 }
 
-template <typename Read>
-void read_items(ObjectReader& parent, std::string_view key, Read read) {
-  const json* list = parent.raw(key);
-  if (!list) throw invalid_field(parent.field(key), "is required");
-  if (!list->is_array()) throw invalid_field(parent.field(key), "must be an array");
-  for (std::size_t i = 0; i < list->size(); ++i) {
-    const std::string path = parent.field(key) + "." + std::to_string(i);
-    ObjectReader r = read_object((*list)[i], path);
-    read(r, path);
-    r.finish();
-  }
-}
 
 const ProbeResult* find_probe(const SceneResult& run, const std::string& id) {
   for (const ProbeResult& p : run.probes) {
@@ -51,7 +40,7 @@ ModalTuningSettings read_modal_tuning(ObjectReader& r) {
   ModalTuningSettings m;
   if (auto mode = r.choice("mode", {"standard", "exact"})) m.mode = static_cast<SoftMode>(*mode);
   m.at_s = r.number("at_s");
-  read_items(r, "groups", [&](ObjectReader& g, const std::string&) {
+  read_object_list(r, "groups", true, [&](ObjectReader& g, const std::string&) {
     JointGroupSettings group;
     group.id = g.string("id").value_or("");
     const json* joints = g.raw("joints");
@@ -62,7 +51,7 @@ ModalTuningSettings read_modal_tuning(ObjectReader& r) {
     }
     m.groups.push_back(std::move(group));
   });
-  read_items(r, "targets", [&](ObjectReader& t, const std::string& path) {
+  read_object_list(r, "targets", true, [&](ObjectReader& t, const std::string& path) {
     ModeTargetSettings target;
     target.probe = t.string("probe").value_or("");
     target.body = t.string("body").value_or("");

@@ -58,19 +58,6 @@ std::optional<TuneRequest> read_designer_fields(ObjectReader& r, const std::stri
 
 namespace {
 
-template <typename Read>
-void read_list(ObjectReader& parent, std::string_view key, Read read) {
-  const json* list = parent.raw(key);
-  if (!list) return;
-  if (!list->is_array()) throw invalid_field(parent.field(key), "must be an array");
-  for (std::size_t i = 0; i < list->size(); ++i) {
-    const std::string path = parent.field(key) + "." + std::to_string(i);
-    ObjectReader r = read_object((*list)[i], path);
-    read(r, path);
-    r.finish();
-  }
-}
-
 WorldSettings read_world(ObjectReader& r) {
   WorldSettings w;
   w.gravity = read_vec2(r, "gravity", w.gravity);
@@ -303,11 +290,11 @@ Scene decode_scene(const json& doc) {
     if (auto v = camera->string("follow")) s.camera.follow = *v;
     camera->finish();
   }
-  read_list(r, "bodies", [&](ObjectReader& o, const std::string&) { s.bodies.push_back(read_body(o)); });
-  read_list(r, "joints", [&](ObjectReader& o, const std::string& path) { s.joints.push_back(read_joint(o, path)); });
-  read_list(r, "oscillators", [&](ObjectReader& o, const std::string& path) { s.oscillators.push_back(read_oscillator(o, path)); });
-  read_list(r, "probes", [&](ObjectReader& o, const std::string&) { s.probes.push_back(read_probe(o)); });
-  read_list(r, "expectations", [&](ObjectReader& o, const std::string&) { s.expectations.push_back(read_expectation(o)); });
+  read_object_list(r, "bodies", false, [&](ObjectReader& o, const std::string&) { s.bodies.push_back(read_body(o)); });
+  read_object_list(r, "joints", false, [&](ObjectReader& o, const std::string& path) { s.joints.push_back(read_joint(o, path)); });
+  read_object_list(r, "oscillators", false, [&](ObjectReader& o, const std::string& path) { s.oscillators.push_back(read_oscillator(o, path)); });
+  read_object_list(r, "probes", false, [&](ObjectReader& o, const std::string&) { s.probes.push_back(read_probe(o)); });
+  read_object_list(r, "expectations", false, [&](ObjectReader& o, const std::string&) { s.expectations.push_back(read_expectation(o)); });
   if (auto m = r.object("modal_tuning")) {
     s.modal_tuning = read_modal_tuning(*m);
     m->finish();
