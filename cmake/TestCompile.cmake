@@ -6,9 +6,12 @@
 # shared header 19.9 s, plus 6.8 s once for the header itself. The code under test (core, scene, the
 # server libraries) keeps the build type's optimisation; only the test files' own code runs at -O1.
 #
-# softtune_test_compile(DIR) gives every executable defined in DIR and below both, reusing the header that
+# softtune_test_compile(DIR) gives every executable defined in DIR and below both (and a unity build,
+# cmake/UnityBuild.cmake), reusing the header that
 # softtune_test_pch compiles once (REUSE_FROM: same compiler, same flags; no header in it depends on a
 # target's own definitions).
+
+include(${CMAKE_CURRENT_LIST_DIR}/UnityBuild.cmake)
 
 set(SOFTTUNE_TEST_OPTIMISATION -O1)
 
@@ -24,6 +27,7 @@ function(softtune_test_compile dir)
     if(type STREQUAL "EXECUTABLE")
       target_compile_options(${t} PRIVATE ${SOFTTUNE_TEST_OPTIMISATION})
       target_precompile_headers(${t} REUSE_FROM softtune_test_pch)
+      softtune_unity(${t})
       # The shared header's include paths: a test that does not link Eigen itself still finds what it holds.
       target_link_libraries(${t} PRIVATE GTest::gtest nlohmann_json::nlohmann_json Eigen3::Eigen)
     endif()

@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string number_text(double v) {
+std::string short_number(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.4g", v);
   return buffer;
@@ -91,7 +91,7 @@ std::string figure_label(const json& e) {
 
 std::string case_key(const std::string& preset, const CheckRate& rate) {
   if (rate.substeps == 0) return preset;  // a preset that could not be read has no rate
-  return preset + "@" + number_text(rate.fps) + "x" + std::to_string(rate.substeps);
+  return preset + "@" + short_number(rate.fps) + "x" + std::to_string(rate.substeps);
 }
 
 std::vector<CheckRate> check_rates(const scene::Scene& scene, const CheckOptions& options) {
@@ -247,9 +247,9 @@ std::vector<std::string> failure_messages(const CaseResult& c) {
       m += " is undefined (no fit, or never settled)";
     } else {
       const double v = e["value"];
-      m += " = " + number_text(v);
-      if (!e["min"].is_null() && v < e["min"].get<double>()) m += ", below min " + number_text(e["min"]);
-      if (!e["max"].is_null() && v > e["max"].get<double>()) m += ", above max " + number_text(e["max"]);
+      m += " = " + short_number(v);
+      if (!e["min"].is_null() && v < e["min"].get<double>()) m += ", below min " + short_number(e["min"]);
+      if (!e["max"].is_null() && v > e["max"].get<double>()) m += ", above max " + short_number(e["max"]);
     }
     if (!e["note"].get<std::string>().empty()) m += " (" + e["note"].get<std::string>() + ")";
     out.push_back(std::move(m));

@@ -28,7 +28,7 @@ std::string last_part(const std::string& figure) {
   return cut == std::string::npos ? figure : figure.substr(cut + 1);
 }
 
-std::string number_text(const std::optional<double>& v) {
+std::string figure_text(const std::optional<double>& v) {
   if (!v) return "undefined";
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6g", *v);
@@ -111,11 +111,11 @@ std::vector<Drift> compare_with_baseline(const Baseline& baseline, const std::st
 }
 
 std::string drift_message(const Drift& d) {
-  std::string out = d.figure + ": baseline " + number_text(d.baseline) + ", now ";
+  std::string out = d.figure + ": baseline " + figure_text(d.baseline) + ", now ";
   if (d.missing) return out + "not measured (the probe is gone)";
-  out += number_text(d.value);
+  out += figure_text(d.value);
   if (d.baseline && d.value) {
-    out += " (tolerance " + number_text(d.tolerance.absolute + d.tolerance.relative * std::abs(*d.baseline)) + ")";
+    out += " (tolerance " + figure_text(d.tolerance.absolute + d.tolerance.relative * std::abs(*d.baseline)) + ")";
   }
   return out;
 }

@@ -10,13 +10,13 @@
 namespace softtune::cli {
 namespace {
 
-constexpr const char* kHelp = R"(softtune accuracy: error against run time for every method, and a recommendation.
+constexpr const char* kAccuracyHelp = R"(softtune accuracy: error against run time for every method, and a recommendation.
 
   softtune accuracy --request FILE   read the request JSON from FILE (- for stdin): a tune request plus
                                      error_budget, step_rates, soft_substeps, duration_s, timing_repeats, box2d
   softtune accuracy [flags]          or build it from the tune flags:
 )";
-constexpr const char* kHelpTail = R"(  report flags:
+constexpr const char* kAccuracyHelpTail = R"(  report flags:
     --error-budget B    max position error as a fraction of the amplitude (default 0.05)
     --step-rates LIST   comma-separated fps values (default 30,60,120,240,480; the request's fps is added)
     --duration S        simulated seconds (minimum 3 periods; default 3 periods, or 8 frames of the
@@ -47,7 +47,7 @@ int run_accuracy(const Args& args) {
     for (const char* f : {"request", "format", "error-budget", "step-rates", "duration"}) with_value.emplace_back(f);
     const Flags flags = parse_flags(args, with_value, {"help", "no-box2d"});
     if (flags.has("help")) {
-      std::cout << kHelp << kTuneFlagsHelp << kHelpTail;
+      std::cout << kAccuracyHelp << kTuneFlagsHelp << kAccuracyHelpTail;
       return kExitOk;
     }
     const app::Format format = app::format_named(flags.get("format").value_or("json"),

@@ -17,7 +17,7 @@
 namespace softtune::cli {
 namespace {
 
-constexpr const char* kHelp = R"HELP(softtune check [DIR|FILE...] [flags]: run every preset's expectations.
+constexpr const char* kCheckHelp = R"HELP(softtune check [DIR|FILE...] [flags]: run every preset's expectations.
 
   DIR|FILE              presets directories (each validated against its schema.json) and preset files
                         (validated against the schema.json beside them, else the default directory's);
@@ -111,7 +111,7 @@ int run_check(const Args& args) {
     const Flags flags = parse_flags(with_long_jobs_flag(args), {"fps", "substeps", "format", "baseline", "jobs", "shard"},
                                     {"json", "help", "update-baseline"});
     if (flags.has("help")) {
-      std::cout << kHelp;
+      std::cout << kCheckHelp;
       return kExitOk;
     }
     const std::string format = flags.has("json") ? "json" : flags.get("format").value_or("text");

@@ -12,7 +12,7 @@
 namespace softtune::cli {
 namespace {
 
-constexpr const char* kHelp = R"(softtune identify: what an engine did in a recorded trajectory, and what to type instead.
+constexpr const char* kIdentifyHelp = R"(softtune identify: what an engine did in a recorded trajectory, and what to type instead.
 
   softtune identify --csv FILE [options] [tune flags]   FILE (- for stdin): a header row, then time in
                                                          seconds and one column per probe
@@ -25,7 +25,7 @@ constexpr const char* kHelp = R"(softtune identify: what an engine did in a reco
                              an earlier recording and what was typed for it (the correction then iterates)
  tune flags (the request the engine was tuned with; needed for the error and the correction):
 )";
-constexpr const char* kHelpTail = R"(
+constexpr const char* kIdentifyHelpTail = R"(
 Prints one JSON object: frequency, damping ratio, equilibrium, poles, residual, verdicts, and with a
 request the error against it and the correction. Bad input: exit code 2.
 )";
@@ -68,7 +68,7 @@ int run_identify(const Args& args) {
     for (const char* f : kOwnFlags) with_value.emplace_back(f);
     const Flags flags = parse_flags(args, with_value, {"help"});
     if (flags.has("help")) {
-      std::cout << kHelp << kTuneFlagsHelp << kHelpTail;
+      std::cout << kIdentifyHelp << kTuneFlagsHelp << kIdentifyHelpTail;
       return kExitOk;
     }
     print_json(app::run_identify(request_from(flags, [&] {

@@ -9,7 +9,7 @@
 namespace softtune::cli {
 namespace {
 
-constexpr const char* kHelp = R"(softtune modes: the modes of a scene about its rest state.
+constexpr const char* kModesHelp = R"(softtune modes: the modes of a scene about its rest state.
 
   softtune modes --preset NAME     a preset from the presets directory
   softtune modes --request FILE    a full scene (JSON, - for stdin), or {"preset": NAME, ...}
@@ -27,7 +27,7 @@ int run_modes(const Args& args) {
   return guarded([&] {
     const Flags flags = parse_flags(args, {"preset", "request", "presets", "mass-model", "at"}, {"help"});
     if (flags.has("help")) {
-      std::cout << kHelp;
+      std::cout << kModesHelp;
       return kExitOk;
     }
     if (!flags.positional.empty()) throw codec::invalid_field(flags.positional.front(), "is not an argument of modes (see --help)");

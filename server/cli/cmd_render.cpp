@@ -13,7 +13,7 @@
 namespace softtune::cli {
 namespace {
 
-constexpr const char* kHelp = R"(softtune render: preview frames of a preset as PNG files.
+constexpr const char* kRenderHelp = R"(softtune render: preview frames of a preset as PNG files.
 
   softtune render --preset NAME --out DIR [options]
     --frames N            frames to render (default 60, at most 600)
@@ -72,7 +72,7 @@ int run_render(const Args& args) {
                                          "mass-model", "animation"});
     const Flags flags = parse_flags(args, with_value, {"help"});
     if (flags.has("help")) {
-      std::cout << kHelp;
+      std::cout << kRenderHelp;
       return kExitOk;
     }
     const auto preset = flags.get("preset");

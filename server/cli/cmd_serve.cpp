@@ -20,7 +20,7 @@
 namespace softtune::cli {
 namespace {
 
-constexpr const char* kHelp = R"(softtune serve: the REST API under /api/v1/ and the page from web/.
+constexpr const char* kServeHelp = R"(softtune serve: the REST API under /api/v1/ and the page from web/.
 
   --host H       address to listen on (default 127.0.0.1)
   --port P       TCP port (default 8080; 0 picks a free one)
@@ -72,7 +72,7 @@ int run_serve(const Args& args) {
   return guarded([&] {
     const Flags flags = parse_flags(args, {"host", "port", "threads", "web", "presets", "cors-origin"}, {"help"});
     if (flags.has("help")) {
-      std::cout << kHelp;
+      std::cout << kServeHelp;
       return kExitOk;
     }
     http::TransportOptions options;

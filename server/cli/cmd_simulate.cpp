@@ -10,7 +10,7 @@
 namespace softtune::cli {
 namespace {
 
-constexpr const char* kHelp = R"(softtune simulate: run a scene and measure the response it achieved.
+constexpr const char* kSimulateHelp = R"(softtune simulate: run a scene and measure the response it achieved.
 
   softtune simulate --preset NAME     a preset from the presets directory
   softtune simulate --request FILE    a full scene (JSON, - for stdin), or {"preset": NAME, ...}
@@ -29,7 +29,7 @@ int run_simulate(const Args& args) {
   return guarded([&] {
     const Flags flags = parse_flags(args, {"preset", "request", "presets", "mass-model", "frame-stride"}, {"frames", "help"});
     if (flags.has("help")) {
-      std::cout << kHelp;
+      std::cout << kSimulateHelp;
       return kExitOk;
     }
     if (!flags.positional.empty()) throw codec::invalid_field(flags.positional.front(), "is not an argument of simulate (see --help)");

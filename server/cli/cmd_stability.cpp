@@ -11,7 +11,7 @@
 namespace softtune::cli {
 namespace {
 
-constexpr const char* kHelp = R"(softtune stability: predicted (step matrix) against observed (simulation) stability.
+constexpr const char* kStabilityHelp = R"(softtune stability: predicted (step matrix) against observed (simulation) stability.
 
   softtune stability                 the default sweep (>= 10,000 cases) and the sequential-impulse chain
   softtune stability --preset NAME   each tuned joint's highest stable frequency in Box2D 2.4 (a table;
@@ -32,7 +32,7 @@ int run_stability(const Args& args) {
   return guarded([&] {
     const Flags flags = parse_flags(args, {"request", "format", "preset", "presets"}, {"help", "summary"});
     if (flags.has("help")) {
-      std::cout << kHelp;
+      std::cout << kStabilityHelp;
       return kExitOk;
     }
     const app::Format format =

@@ -9,12 +9,12 @@
 namespace softtune::cli {
 namespace {
 
-constexpr const char* kHelp = R"(softtune tune: turn a designer's request into solver numbers.
+constexpr const char* kTuneHelp = R"(softtune tune: turn a designer's request into solver numbers.
 
   softtune tune --request FILE      read the request JSON from FILE (- for stdin)
   softtune tune [flags]             or build it from flags:
 )";
-constexpr const char* kHelpTail = R"(
+constexpr const char* kTuneHelpTail = R"(
 Prints one JSON object. Bad input: exit code 2 and a problem JSON on stderr naming the field.
 )";
 
@@ -26,7 +26,7 @@ int run_tune(const Args& args) {
     with_value.emplace_back("request");
     const Flags flags = parse_flags(args, with_value, {"help"});
     if (flags.has("help")) {
-      std::cout << kHelp << kTuneFlagsHelp << kHelpTail;
+      std::cout << kTuneHelp << kTuneFlagsHelp << kTuneHelpTail;
       return kExitOk;
     }
     print_json(app::run_tune(request_from(flags, [&] { return tune_fields_from_flags(flags); })));

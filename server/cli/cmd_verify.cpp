@@ -8,13 +8,13 @@
 namespace softtune::cli {
 namespace {
 
-constexpr const char* kHelp = R"(softtune verify: run a tuning in the real engines and measure what they do.
+constexpr const char* kVerifyHelp = R"(softtune verify: run a tuning in the real engines and measure what they do.
 
   softtune verify --request FILE    read the request JSON from FILE (- for stdin): the tune fields plus
                                     "engines": ["box2d_v2_4", ...], "duration_s", "body", "x0"
   softtune verify --engines a,b [--duration S] [--body point|rotating_plank] [tune flags]:
 )";
-constexpr const char* kHelpTail = R"(
+constexpr const char* kVerifyHelpTail = R"(
 Prints one JSON object: per engine what to type, what its model predicts, what the engine measured, and
 the same for the exact parameters. Without --engines no engine runs. Bad input: exit code 2.
 )";
@@ -40,7 +40,7 @@ int run_verify(const Args& args) {
     for (const char* f : {"request", "engines", "duration", "body"}) with_value.emplace_back(f);
     const Flags flags = parse_flags(args, with_value, {"help"});
     if (flags.has("help")) {
-      std::cout << kHelp << kTuneFlagsHelp << kHelpTail;
+      std::cout << kVerifyHelp << kTuneFlagsHelp << kVerifyHelpTail;
       return kExitOk;
     }
     print_json(app::run_verify(request_from(flags, [&] {

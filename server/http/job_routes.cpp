@@ -34,8 +34,8 @@ class LazyJobs {
   std::unique_ptr<app::JobRunner> runner_;
 };
 
-// An id not of the job form names no job and is not echoed (as preview ids, preview_routes.cpp checked_id).
-const std::string& checked_id(const HttpRequest& request) {
+// An id not of the job form names no job and is not echoed (as preview ids, preview_routes.cpp checked_preview_id).
+const std::string& checked_job_id(const HttpRequest& request) {
   const std::string& id = request.params.at("id");
   if (!app::is_job_id(id)) {
     throw codec::Problem(404, "Not found", "id", "no such job: a job id is \"j\" and 16 lower-case hex digits, as POST .../jobs gives it");
@@ -82,7 +82,7 @@ std::vector<Route> job_routes() {
        }},
       {"GET", std::string(kJobsPrefix) + "/{id}",
        [jobs](const HttpRequest& request, Service&) {
-         const std::string& id = checked_id(request);
+         const std::string& id = checked_job_id(request);
          auto status = jobs->started() ? jobs->get().status(id) : std::nullopt;
          if (!status) throw unknown_job(id);
          HttpResponse r;
@@ -91,7 +91,7 @@ std::vector<Route> job_routes() {
        }},
       {"DELETE", std::string(kJobsPrefix) + "/{id}",
        [jobs](const HttpRequest& request, Service&) {
-         const std::string& id = checked_id(request);
+         const std::string& id = checked_job_id(request);
          if (!jobs->started() || !jobs->get().cancel(id)) throw unknown_job(id);
          auto status = jobs->get().status(id);
          if (!status) throw unknown_job(id);

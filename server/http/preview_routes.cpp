@@ -41,7 +41,7 @@ codec::Problem not_found(const std::string& what) { return codec::Problem(404, "
 // digits. Anything else names no preview, and is not echoed (a 5000-character id made a 5 KB 404).
 constexpr std::size_t kIdLength = 64;
 
-const std::string& checked_id(const HttpRequest& request) {
+const std::string& checked_preview_id(const HttpRequest& request) {
   const std::string& id = request.params.at("id");
   const bool valid = id.size() == kIdLength &&
                      std::all_of(id.begin(), id.end(), [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
@@ -73,7 +73,7 @@ Route clip_route(const std::shared_ptr<LazyPreviews>& previews, render::ClipForm
   const std::string name = std::string(render::clip_format_name(format));
   return {"GET", std::string(kPrefix) + "/{id}/animation." + name,
           [previews, format, name](const HttpRequest& request, Service&) {
-            const std::string& id = checked_id(request);
+            const std::string& id = checked_preview_id(request);
             auto bytes = previews->started() ? previews->get().clip(id, format) : std::nullopt;
             if (!bytes) throw not_found("no finished preview " + id);
             return image(request, std::move(*bytes), "\"" + id + "-animation-" + name + "\"",
@@ -107,21 +107,21 @@ std::vector<Route> preview_routes() {
        }},
       {"GET", "/api/v1/preview/{id}",
        [previews](const HttpRequest& request, Service&) {
-         const std::string& id = checked_id(request);
+         const std::string& id = checked_preview_id(request);
          auto status = previews->started() ? previews->get().status(id, kPrefix) : std::nullopt;
          if (!status) throw not_found("no preview " + id + " (they are kept in a bounded cache; ask again)");
          return json_response(*status);
        }},
       {"GET", "/api/v1/preview/{id}/filmstrip.png",
        [previews](const HttpRequest& request, Service&) {
-         const std::string& id = checked_id(request);
+         const std::string& id = checked_preview_id(request);
          auto bytes = previews->started() ? previews->get().filmstrip_png(id) : std::nullopt;
          if (!bytes) throw not_found("no finished preview " + id);
          return png(request, std::move(*bytes), "\"" + id + "-filmstrip\"");
        }},
       {"GET", "/api/v1/preview/{id}/{n}.png",
        [previews](const HttpRequest& request, Service&) {
-         const std::string& id = checked_id(request);
+         const std::string& id = checked_preview_id(request);
          const int n = frame_index(request.params.at("n"));
          auto bytes = previews->started() ? previews->get().frame_png(id, n) : std::nullopt;
          if (!bytes) throw not_found("no frame " + std::to_string(n) + " of preview " + id);

@@ -29,7 +29,7 @@ std::string oscillator_csv(double f, double zeta, int rows) {
   return out.str();
 }
 
-std::string problem_field(const json& request) {
+std::string identify_problem(const json& request) {
   try {
     run_identify(request);
   } catch (const codec::Problem& p) {
@@ -75,16 +75,16 @@ TEST(IdentifyApp, SecondRecordingIteratesBySecant) {
 }
 
 TEST(IdentifyApp, BadSeriesNameRowAndColumn) {
-  EXPECT_EQ(problem_field({{"csv", "time,x\n0,1\n0.1,abc\n"}}).substr(0, 21), "422 csv.rows.1.x: lin");
-  EXPECT_EQ(problem_field({{"csv", "time,x\n0,1\n0.1,2,3\n"}}).substr(0, 20), "422 csv.rows.1: line");
-  EXPECT_EQ(problem_field({{"csv", "time,x\n0,1\n0,2\n"}}).substr(0, 22), "422 csv.rows.1.time: c");
-  EXPECT_EQ(problem_field({{"csv", "0,1\n0.1,2\n"}}).substr(0, 15), "422 csv.header:");
-  EXPECT_EQ(problem_field({{"time_s", {0, 0.1, 0.2}}, {"probes", {{"x", {1, 2}}}}}).substr(0, 17), "422 probes.x.2: m");
-  EXPECT_EQ(problem_field({{"time_s", {0, 0.1, 0.2}}, {"probes", {{"x", {1, "a", 3}}}}}).substr(0, 18), "422 probes.x.1: mu");
-  EXPECT_EQ(problem_field({{"time_s", {0, 0.1}}, {"probes", {{"x", {1, 2}}}}, {"typed", {{"k", 1}, {"c", 1}}}}).substr(0, 12),
+  EXPECT_EQ(identify_problem({{"csv", "time,x\n0,1\n0.1,abc\n"}}).substr(0, 21), "422 csv.rows.1.x: lin");
+  EXPECT_EQ(identify_problem({{"csv", "time,x\n0,1\n0.1,2,3\n"}}).substr(0, 20), "422 csv.rows.1: line");
+  EXPECT_EQ(identify_problem({{"csv", "time,x\n0,1\n0,2\n"}}).substr(0, 22), "422 csv.rows.1.time: c");
+  EXPECT_EQ(identify_problem({{"csv", "0,1\n0.1,2\n"}}).substr(0, 15), "422 csv.header:");
+  EXPECT_EQ(identify_problem({{"time_s", {0, 0.1, 0.2}}, {"probes", {{"x", {1, 2}}}}}).substr(0, 17), "422 probes.x.2: m");
+  EXPECT_EQ(identify_problem({{"time_s", {0, 0.1, 0.2}}, {"probes", {{"x", {1, "a", 3}}}}}).substr(0, 18), "422 probes.x.1: mu");
+  EXPECT_EQ(identify_problem({{"time_s", {0, 0.1}}, {"probes", {{"x", {1, 2}}}}, {"typed", {{"k", 1}, {"c", 1}}}}).substr(0, 12),
             "422 request:");
-  EXPECT_EQ(problem_field({{"time_s", {0, 0.1}}, {"probes", {{"x", {1, 2}}}}, {"engine", "a b"}}).substr(0, 10), "422 engine");
-  EXPECT_EQ(problem_field({{"time_s", {0, 0.1}}, {"probes", {{"x", {1, 2}}}}, {"bogus", 1}}).substr(0, 9), "422 bogus");
+  EXPECT_EQ(identify_problem({{"time_s", {0, 0.1}}, {"probes", {{"x", {1, 2}}}}, {"engine", "a b"}}).substr(0, 10), "422 engine");
+  EXPECT_EQ(identify_problem({{"time_s", {0, 0.1}}, {"probes", {{"x", {1, 2}}}}, {"bogus", 1}}).substr(0, 9), "422 bogus");
 }
 
 // Mutated recordings (bytes flipped, rows cut, values made huge): each is an answer without NaN or a 4xx,

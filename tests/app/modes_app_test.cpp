@@ -9,13 +9,14 @@
 #include "app/preset_store.h"
 #include "app/simulate_app.h"
 #include "codec/problem.h"
+#include "../presets_dir.h"
 
 namespace softtune::app {
 namespace {
 
 using nlohmann::json;
 
-const std::string kPresets = SOFTTUNE_PRESETS_DIR;
+using test_support::kPresets;
 
 std::string problem_field(const std::function<json()>& run) {
   try {

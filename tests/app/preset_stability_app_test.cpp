@@ -9,11 +9,12 @@
 #include "app/stability_app.h"
 #include "codec/problem.h"
 #include "codec/stability_codec.h"
+#include "../presets_dir.h"
 
 namespace softtune::app {
 namespace {
 
-const std::string kPresets = SOFTTUNE_PRESETS_DIR;
+using test_support::kPresets;
 
 codec::Problem problem_of(const nlohmann::json& doc) {
   try {

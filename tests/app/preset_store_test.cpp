@@ -10,6 +10,7 @@
 
 #include "app/simulate_app.h"
 #include "codec/problem.h"
+#include "../presets_dir.h"
 
 namespace softtune::codec {
 namespace {
@@ -19,7 +20,7 @@ using namespace softtune::app;
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-const std::string kPresets = SOFTTUNE_PRESETS_DIR;
+using test_support::kPresets;
 
 TEST(Presets, AllSevenFromTheTalkExistAndPassTheirChecks) {
   const auto names = list_presets(kPresets);

@@ -12,13 +12,14 @@
 #include "softtune/render/camera_path.h"
 #include "softtune/render/tessellate.h"
 #include "softtune/scene/runner.h"
+#include "../presets_dir.h"
 
 namespace softtune::app {
 namespace {
 
 using nlohmann::json;
 
-const std::string kPresets = SOFTTUNE_PRESETS_DIR;
+using test_support::kPresets;
 
 struct PresetRun {
   json doc;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "../presets_dir.h"
 
 namespace softtune::codec {
 namespace {
@@ -14,7 +15,7 @@ using namespace softtune::app;
 
 using nlohmann::json;
 
-const std::string kPresets = SOFTTUNE_PRESETS_DIR;
+using test_support::kPresets;
 
 TEST(Simulate, OscillatorPresetHasNoBox2DStage) {
   const json out = run_simulate({{"preset", "oscillator"}}, kPresets);

@@ -7,6 +7,7 @@
 #include "app/preset_store.h"
 #include "app/simulate_app.h"
 #include "codec/problem.h"
+#include "../presets_dir.h"
 
 namespace softtune::codec {
 namespace {
@@ -15,7 +16,7 @@ using namespace softtune::app;
 
 using nlohmann::json;
 
-const std::string kPresets = SOFTTUNE_PRESETS_DIR;
+using test_support::kPresets;
 
 TEST(Simulate, AFullSceneIsValidatedAndRun) {
   json scene = load_preset(kPresets, "mouse");

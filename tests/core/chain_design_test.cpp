@@ -12,7 +12,7 @@
 namespace softtune {
 namespace {
 
-constexpr double kH = 1.0 / 60.0;
+constexpr double kDesignH = 1.0 / 60.0;
 
 Verdict simulated(const ChainSolverSettings& s, int count, double ratio, double frequency_hz) {
   const ChainModel m = chain_model_for(s, count, ratio, 2.0 * std::numbers::pi * frequency_hz, 0.0);
@@ -30,7 +30,7 @@ TEST(ChainDesign, FewestCountHoldsWithMarginAndOneFewerDoesNot) {
     q.mass_ratio = 1e3;
     q.frequency_hz = frequency;
     q.margin = 1.25;
-    q.solvers.push_back({solver, 1, true, kH, std::nullopt, 1});
+    q.solvers.push_back({solver, 1, true, kDesignH, std::nullopt, 1});
     const std::vector<ChainDesign> answer = design_chain(q);
     ASSERT_EQ(answer.size(), 1u);
     for (const ChainDesign& d : answer) {
@@ -60,7 +60,7 @@ TEST(ChainDesign, LimitWithTheUsersSettingsHoldsUnderSimulation) {
   ChainDesignRequest q;
   q.mass_ratio = 100.0;
   q.frequency_hz = 12.0;
-  q.solvers = {{ChainSolver::box2d_v2_4, 2, true, kH, std::nullopt, 1}, {ChainSolver::jolt, 4, true, kH, 0.0, 1}};
+  q.solvers = {{ChainSolver::box2d_v2_4, 2, true, kDesignH, std::nullopt, 1}, {ChainSolver::jolt, 4, true, kDesignH, 0.0, 1}};
   for (const ChainDesign& d : design_chain(q)) {
     ASSERT_EQ(d.limit.kind, LimitKind::found);
     EXPECT_TRUE(d.limit.confirmed);
@@ -73,9 +73,9 @@ TEST(ChainDesign, LimitWithTheUsersSettingsHoldsUnderSimulation) {
 
 // Jolt's linear damping, when the user sets it to 0, is Box2D 2.4's sequential impulses exactly.
 TEST(ChainDesign, JoltWithoutDampingIsBox2D24) {
-  const ChainSolverSettings jolt{ChainSolver::jolt, 3, true, kH, 0.0};
+  const ChainSolverSettings jolt{ChainSolver::jolt, 3, true, kDesignH, 0.0};
   const ChainModel a = chain_model_for(jolt, 3, 1e3, 40.0, 0.1);
-  const ChainModel b = chain_model(ChainSolver::box2d_v2_4, 3, true, 1e3, 40.0, 0.1, kH);
+  const ChainModel b = chain_model(ChainSolver::box2d_v2_4, 3, true, 1e3, 40.0, 0.1, kDesignH);
   EXPECT_EQ((chain_step_matrix(a) - chain_step_matrix(b)).norm(), 0.0);
 }
 

@@ -16,13 +16,13 @@
 namespace softtune {
 namespace {
 
-constexpr double kH = 1.0 / 60.0;
-const double kOmega = 2.0 * std::numbers::pi * 10.0;
+constexpr double kChainH = 1.0 / 60.0;
+const double kChainOmega = 2.0 * std::numbers::pi * 10.0;
 constexpr double kZeta = 0.1;
 
 // The weight (1 kg) on a link of 1e12 kg: the weight's joint sees an effective mass of 1 kg to 1e-12.
 ChainModel fixed_link(ChainSolver solver, int count, bool warm) {
-  ChainModel m = chain_model(solver, count, warm, 1e-12, kOmega, kZeta, kH);
+  ChainModel m = chain_model(solver, count, warm, 1e-12, kChainOmega, kZeta, kChainH);
   m.link_mass = 1e12;
   return m;
 }
@@ -42,26 +42,26 @@ void expect_weight_follows(const ChainModel& model, Reference reference) {
 }
 
 TEST(ChainSolvers, FixedLinkIsTheEnginesOneConstraintModel) {
-  const double k = kOmega * kOmega, c = 2.0 * kZeta * kOmega;  // on 1 kg
+  const double k = kChainOmega * kChainOmega, c = 2.0 * kZeta * kChainOmega;  // on 1 kg
   for (bool warm : {false, true}) {
     for (int count : {1, 4}) {
       // Box2D 2.4: the talk's soft step (softtune's Method::soft), whatever the iteration count.
-      const StepModel soft = make_step_model(1.0, kOmega, kZeta, kH);
+      const StepModel soft = make_step_model(1.0, kChainOmega, kZeta, kChainH);
       expect_weight_follows(fixed_link(ChainSolver::box2d_v2_4, count, warm), [&](const Eigen::Vector3d& x) {
         const State n = step(Method::soft, {x[0], x[1]}, soft);
         return Eigen::Vector3d(n.x, n.v, 0.0);
       });
       // Box2D v3: box2d_v3_step_map carries (x, v, impulse).
-      const Eigen::Matrix3d v3 = engines::box2d_v3_step_map(1.0, 10.0, kZeta, kH, count, warm);
+      const Eigen::Matrix3d v3 = engines::box2d_v3_step_map(1.0, 10.0, kZeta, kChainH, count, warm);
       expect_weight_follows(fixed_link(ChainSolver::box2d_v3, count, warm),
                             [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return v3 * x; });
       // Jolt (one collision step, mNumVelocitySteps = count) and Rapier (count substeps).
-      const Eigen::Matrix2d jolt = engines::jolt_step_map(1.0, k, c, kH, 1, 0.05);
+      const Eigen::Matrix2d jolt = engines::jolt_step_map(1.0, k, c, kChainH, 1, 0.05);
       expect_weight_follows(fixed_link(ChainSolver::jolt, count, warm), [&](const Eigen::Vector3d& x) {
         const Eigen::Vector2d n = jolt * x.head<2>();
         return Eigen::Vector3d(n[0], n[1], 0.0);
       });
-      const Eigen::Matrix2d rapier = engines::rapier_step_map(1.0, k, c, kH, count, 0.0);
+      const Eigen::Matrix2d rapier = engines::rapier_step_map(1.0, k, c, kChainH, count, 0.0);
       expect_weight_follows(fixed_link(ChainSolver::rapier, count, warm), [&](const Eigen::Vector3d& x) {
         const Eigen::Vector2d n = rapier * x.head<2>();
         return Eigen::Vector3d(n[0], n[1], 0.0);
@@ -76,7 +76,7 @@ TEST(ChainSolvers, LimitsHoldUnderSimulationJustBelowAndAbove) {
   const std::vector<double> scan = default_chain_sweep_settings().frequency_ratios;
   for (ChainSolver solver : kAllChainSolvers) {
     const int count = chain_default_count(solver);
-    const ChainLimit l = find_chain_limit(solver, count, true, 1e3, 0.0, kH, scan, 1000);
+    const ChainLimit l = find_chain_limit(solver, count, true, 1e3, 0.0, kChainH, scan, 1000);
     if (l.kind != LimitKind::found) {
       EXPECT_EQ(l.kind, LimitKind::none_in_range) << chain_solver_name(solver);
       continue;
@@ -84,7 +84,7 @@ TEST(ChainSolvers, LimitsHoldUnderSimulationJustBelowAndAbove) {
     EXPECT_TRUE(l.confirmed) << chain_solver_name(solver);
     EXPECT_LE(*l.lowest_unstable_frequency_ratio / *l.highest_stable_frequency_ratio - 1.0, kLimitRelativeTolerance);
     auto at = [&](double fr) {
-      return run_chain_case(chain_model(solver, count, true, 1e3, 2.0 * std::numbers::pi * fr / kH, 0.0, kH), 2000);
+      return run_chain_case(chain_model(solver, count, true, 1e3, 2.0 * std::numbers::pi * fr / kChainH, 0.0, kChainH), 2000);
     };
     EXPECT_NE(at(0.99 * *l.highest_stable_frequency_ratio).observed, Verdict::unstable) << chain_solver_name(solver);
     EXPECT_EQ(at(1.01 * *l.lowest_unstable_frequency_ratio).observed, Verdict::unstable) << chain_solver_name(solver);
@@ -95,14 +95,14 @@ TEST(ChainSolvers, LimitsHoldUnderSimulationJustBelowAndAbove) {
 // grid factor below the true limit; the next grid point (0.263) must be unstable and the limit between.
 TEST(ChainSolvers, BisectionRefinesTheGridAnswer) {
   const std::vector<double> scan = default_chain_sweep_settings().frequency_ratios;
-  const ChainLimit l = find_chain_limit(ChainSolver::box2d_v2_4, 1, true, 1e3, 0.0, kH, scan, 1000);
+  const ChainLimit l = find_chain_limit(ChainSolver::box2d_v2_4, 1, true, 1e3, 0.0, kChainH, scan, 1000);
   ASSERT_EQ(l.kind, LimitKind::found);
   ASSERT_TRUE(l.scan_highest_stable_frequency_ratio);
   const auto next = std::upper_bound(scan.begin(), scan.end(), *l.scan_highest_stable_frequency_ratio);
   ASSERT_NE(next, scan.end());
   EXPECT_GT(*l.highest_stable_frequency_ratio, *l.scan_highest_stable_frequency_ratio);
   EXPECT_LT(*l.lowest_unstable_frequency_ratio, *next);
-  EXPECT_EQ(run_chain_case(chain_model(ChainSolver::box2d_v2_4, 1, true, 1e3, 2.0 * std::numbers::pi * *next / kH, 0.0, kH), 1000).observed,
+  EXPECT_EQ(run_chain_case(chain_model(ChainSolver::box2d_v2_4, 1, true, 1e3, 2.0 * std::numbers::pi * *next / kChainH, 0.0, kChainH), 1000).observed,
             Verdict::unstable);
 }
 

@@ -13,7 +13,6 @@
 namespace softtune::modes {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // A bar (M, I) on vertical springs at x = -a and x = +b, its sideways motion held.
 LinearModel bar(double mass, double inertia, double a, double b) {
@@ -46,7 +45,7 @@ TEST(ModalTune, OneGroupPlacesTheHeaveOnItsClosedForm) {
   q.groups = {{{0, 1}, {1000.0, 10.0}}};
   const ModalTuneResult r = solve_modal_tune(m, s, q);
   ASSERT_FALSE(r.error) << r.error->rule;
-  const double w = kTwoPi * f, k = mass * w * w / 2.0;
+  const double w = (2.0 * std::numbers::pi) * f, k = mass * w * w / 2.0;
   EXPECT_NEAR(r.groups[0].stiffness / k, 1.0, 1e-8);
   EXPECT_NEAR(r.groups[0].damping / (zeta * std::sqrt(2.0 * k * mass)), 1.0, 1e-8);
   EXPECT_LT(r.residual, 1e-9);
@@ -66,7 +65,7 @@ TEST(ModalTune, ExactModeIsTheExactSpringOfTheHeaveAt30And60Fps) {
     const ModalTuneResult r = solve_modal_tune(m, s, q);
     ASSERT_FALSE(r.error) << r.error->rule;
     // Two springs carry the heave: each is half of the exact spring of (M, w, zeta) at h.
-    const ExactSpring exact = exact_spring(mass, kTwoPi * f, zeta, q.h);
+    const ExactSpring exact = exact_spring(mass, (2.0 * std::numbers::pi) * f, zeta, q.h);
     EXPECT_NEAR(2.0 * r.groups[0].stiffness / exact.spring.stiffness, 1.0, 1e-7) << fps;
     EXPECT_NEAR(2.0 * r.groups[0].damping / exact.spring.damping, 1.0, 1e-7) << fps;
     const Pole& p = *r.modes[r.targets[0].mode].discrete;
@@ -85,7 +84,7 @@ TEST(ModalTune, TwoGroupsPlaceHeaveAndPitchTogether) {
   const LinearModel m = bar(mass, inertia, a, b);
   ReducedSystem s = reduce(m);
   ModalTuneRequest q;
-  q.targets = {{0, Dof::y, wh / kTwoPi, zh}, {0, Dof::angle, wp / kTwoPi, zp}};
+  q.targets = {{0, Dof::y, wh / (2.0 * std::numbers::pi), zh}, {0, Dof::angle, wp / (2.0 * std::numbers::pi), zp}};
   q.groups = {{{0}, {2000.0, 50.0}}, {{1}, {2000.0, 50.0}}};
   const ModalTuneResult r = solve_modal_tune(m, s, q);
   ASSERT_FALSE(r.error) << r.error->rule;

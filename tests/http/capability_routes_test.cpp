@@ -26,14 +26,10 @@ using softtune::http::testing::web_config;
 
 namespace {
 
-const char* kJson = "application/json";
+using softtune::http::testing::kJson;
 const char* kProblem = "application/problem+json";
-const std::string& kPresets = softtune::http::testing::kRepositoryPresets;
 
-std::string media_type(const httplib::Result& r) {
-  const std::string t = r->get_header_value("Content-Type");
-  return t.substr(0, t.find(';'));
-}
+using softtune::http::testing::media_type;
 
 // A small accuracy request: 2 Hz, zeta 0.1, one step rate, one timing repeat (a few ms of work).
 const char* kSmallAccuracy = R"({"frequency_hz": 2, "damping_ratio": 0.1, "effective_mass": 1, "fps": 60,
@@ -70,7 +66,7 @@ TEST(CapabilityRoutes, SimulateBuddhasIsTheCliAnswer) {
   ASSERT_EQ(r->status, 200) << r->body;
   EXPECT_EQ(media_type(r), kJson);
   const json doc = json::parse(r->body);
-  EXPECT_EQ(doc, softtune::app::run_simulate(request, kPresets));
+  EXPECT_EQ(doc, softtune::app::run_simulate(request, softtune::http::testing::kRepositoryPresets));
   EXPECT_EQ(doc["name"], "buddhas");
   EXPECT_TRUE(doc["finite"].get<bool>());
   EXPECT_EQ(conformance_error("/api/v1/simulate", "post", 200, kJson, doc), "");
@@ -100,7 +96,7 @@ TEST(CapabilityRoutes, ModesAreTheCliAnswerAndBadOptionsNameTheField) {
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
   const json doc = json::parse(r->body);
-  EXPECT_EQ(doc, softtune::app::run_modes(request, kPresets));
+  EXPECT_EQ(doc, softtune::app::run_modes(request, softtune::http::testing::kRepositoryPresets));
   EXPECT_EQ(conformance_error("/api/v1/modes", "post", 200, kJson, doc), "");
   expect_problem(s.client().Post("/api/v1/modes", R"({"preset": "vehicle", "at_s": -1})", kJson), 422, "at_s",
                  "/api/v1/modes", "post");
@@ -114,7 +110,7 @@ TEST(CapabilityRoutes, PresetsListAndOnePreset) {
   ASSERT_TRUE(list);
   ASSERT_EQ(list->status, 200) << list->body;
   const json index = json::parse(list->body);
-  EXPECT_EQ(index, softtune::app::presets_index(kPresets));
+  EXPECT_EQ(index, softtune::app::presets_index(softtune::http::testing::kRepositoryPresets));
   EXPECT_EQ(conformance_error("/api/v1/presets", "get", 200, kJson, index), "");
   std::vector<std::string> names;
   for (const json& p : index["presets"]) names.push_back(p["name"]);
@@ -124,7 +120,7 @@ TEST(CapabilityRoutes, PresetsListAndOnePreset) {
   auto one = s.client().Get("/api/v1/presets/buddhas");
   ASSERT_TRUE(one);
   ASSERT_EQ(one->status, 200) << one->body;
-  std::ifstream file(kPresets + "/buddhas.json");
+  std::ifstream file(softtune::http::testing::kRepositoryPresets + "/buddhas.json");
   EXPECT_EQ(json::parse(one->body), json::parse(file));
   EXPECT_EQ(conformance_error("/api/v1/presets/{name}", "get", 200, kJson, json::parse(one->body)), "");
 }

@@ -16,8 +16,7 @@ using softtune::http::testing::web_config;
 
 namespace {
 
-const char* kJson = "application/json";
-const std::string& kPresets = softtune::http::testing::kRepositoryPresets;
+using softtune::http::testing::kJson;
 
 }  // namespace
 
@@ -29,7 +28,7 @@ TEST(CheckRoutes, TheReportIsTheUseCasesAnswer) {
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
   const json doc = json::parse(r->body);
-  EXPECT_EQ(doc, softtune::app::run_check_request(request, kPresets).json);
+  EXPECT_EQ(doc, softtune::app::run_check_request(request, softtune::http::testing::kRepositoryPresets).json);
   EXPECT_EQ(conformance_error("/api/v1/check", "post", 200, kJson, doc), "");
   EXPECT_FALSE(doc["passed"].get<bool>());
   ASSERT_EQ(doc["cases"].size(), 4u);

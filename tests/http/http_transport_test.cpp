@@ -18,12 +18,9 @@ using softtune::http::testing::TestServer;
 
 namespace {
 
-const char* kJson = "application/json";
+using softtune::http::testing::kJson;
 
-std::string media_type(const httplib::Result& r) {
-  const std::string t = r->get_header_value("Content-Type");
-  return t.substr(0, t.find(';'));
-}
+using softtune::http::testing::media_type;
 
 // GET `path`, expecting 200 with a JSON body; the body.
 std::string get_json(const TestServer& s, const char* path) {

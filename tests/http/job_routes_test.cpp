@@ -20,7 +20,7 @@ using softtune::http::testing::TestServer;
 
 namespace {
 
-const char* kJson = "application/json";
+using softtune::http::testing::kJson;
 
 // GETs the status URL until the job has ended (20 s at most).
 json wait_until_ended(TestServer& s, const std::string& url) {

@@ -15,7 +15,7 @@ using softtune::http::testing::TestServer;
 
 namespace {
 
-const char* kJson = "application/json";
+using softtune::http::testing::kJson;
 
 TEST(PresetStabilityRoute, GroundJointAnswersNoLimitAndConforms) {
   TestServer s(quick_options(), presets_config());

@@ -38,6 +38,15 @@ inline ServiceConfig web_config() {
 
 /// The repository's presets directory, and the service as `softtune serve --presets DIR` gives it
 /// (not through $SOFTTUNE_PRESETS).
+/// The JSON media type, as a request's Content-Type.
+inline constexpr const char* kJson = "application/json";
+
+/// An answer's media type, without parameters ("application/json; charset=utf-8" -> "application/json").
+inline std::string media_type(const httplib::Result& r) {
+  const std::string t = r->get_header_value("Content-Type");
+  return t.substr(0, t.find(';'));
+}
+
 inline const std::string kRepositoryPresets = SOFTTUNE_SOURCE_DIR "/presets";
 inline ServiceConfig presets_config() {
   ServiceConfig c = web_config();

@@ -7,11 +7,13 @@
 #include "app/preset_store.h"
 #include "codec/scene_codec.h"
 #include "softtune/scene/runner.h"
+#include "../presets_dir.h"
+#include "probe_result.h"
 
 namespace softtune::scene {
 namespace {
 
-const std::string kPresets = SOFTTUNE_PRESETS_DIR;
+using test_support::kPresets;
 
 Scene preset(const std::string& name) { return codec::decode_scene(app::load_preset(kPresets, name)); }
 
@@ -23,13 +25,7 @@ const modes::Mode& named(const std::vector<modes::Mode>& all, const std::string&
   return all.front();
 }
 
-const ProbeResult& probe(const SceneResult& r, const std::string& id) {
-  for (const auto& p : r.probes) {
-    if (p.id == id) return p;
-  }
-  ADD_FAILURE() << "no probe " << id;
-  return r.probes.front();
-}
+using test::probe_result;
 
 // The vehicle at rest, its motor off and the box stack gone, kicked into pitch: Box2D's pitch and heave are the
 // linear model's discrete poles (implicit Euler at the scene's step), to 0.1 % for the pitch it rings freely in.
@@ -69,8 +65,8 @@ TEST(Linearise, VehicleModesAreWhatBox2DMeasures) {
   EXPECT_NEAR(heave.continuous->frequency_hz, 3.0 * std::sqrt(2.0 * m_eff / 120.0), 1e-3);
 
   const SceneResult run = run_scene(scene);
-  const ResponseFit& heave_fit = probe(run, "heave").measured;
-  const ResponseFit& pitch_fit = probe(run, "pitch").measured;
+  const ResponseFit& heave_fit = probe_result(run, "heave").measured;
+  const ResponseFit& pitch_fit = probe_result(run, "pitch").measured;
   ASSERT_TRUE(heave.discrete && pitch.discrete && heave_fit.frequency_hz && pitch_fit.frequency_hz);
   EXPECT_NEAR(pitch.discrete->frequency_hz / *pitch_fit.frequency_hz, 1.0, 1e-3);
   EXPECT_NEAR(pitch.discrete->damping_ratio, *pitch_fit.damping_ratio, 0.005);

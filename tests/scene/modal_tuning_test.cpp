@@ -8,19 +8,15 @@
 #include "app/preset_store.h"
 #include "codec/scene_codec.h"
 #include "softtune/scene/runner.h"
+#include "../presets_dir.h"
+#include "probe_result.h"
 
 namespace softtune::scene {
 namespace {
 
-const std::string kPresets = SOFTTUNE_PRESETS_DIR;
+using test_support::kPresets;
 
-const ProbeResult& probe(const SceneResult& r, const std::string& id) {
-  for (const auto& p : r.probes) {
-    if (p.id == id) return p;
-  }
-  ADD_FAILURE() << "no probe " << id;
-  return r.probes.front();
-}
+using test::probe_result;
 
 TEST(ModalTuning, ExactHeaveIsWhatBox2DMeasuresAt30And60Fps) {
   for (double fps : {30.0, 60.0}) {
@@ -35,7 +31,7 @@ TEST(ModalTuning, ExactHeaveIsWhatBox2DMeasuresAt30And60Fps) {
     ASSERT_TRUE(target.predicted);
     EXPECT_NEAR(target.predicted->frequency_hz, 3.0, 1e-6) << fps;  // the linear model, exact for the step
     EXPECT_NEAR(target.predicted->damping_ratio, 0.5, 1e-6) << fps;
-    const ProbeResult& travel = probe(run, "rear_travel");
+    const ProbeResult& travel = probe_result(run, "rear_travel");
     ASSERT_TRUE(travel.frequency_error && travel.damping_ratio_error);
     EXPECT_LT(std::abs(*travel.frequency_error), 0.03) << fps;
     EXPECT_LT(std::abs(*travel.damping_ratio_error), 0.05) << fps;
@@ -45,7 +41,7 @@ TEST(ModalTuning, ExactHeaveIsWhatBox2DMeasuresAt30And60Fps) {
 
 TEST(ModalTuning, PerSpringVehicleMissesTheHeave) {
   const SceneResult run = run_scene(codec::decode_scene(app::load_preset(kPresets, "vehicle_per_spring")));
-  const ProbeResult& heave = probe(run, "heave");
+  const ProbeResult& heave = probe_result(run, "heave");
   ASSERT_TRUE(heave.measured.frequency_hz);
   EXPECT_LT(*heave.measured.frequency_hz / 3.0 - 1.0, -0.5);
   EXPECT_FALSE(run.modal_tuning);

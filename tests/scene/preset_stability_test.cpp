@@ -12,11 +12,12 @@
 #include "codec/scene_codec.h"
 #include "softtune/chain_solvers.h"
 #include "softtune/scene/box2d_scene.h"
+#include "../presets_dir.h"
 
 namespace softtune::scene {
 namespace {
 
-const std::string kPresets = SOFTTUNE_PRESETS_DIR;
+using test_support::kPresets;
 
 Scene preset(const std::string& name) { return codec::decode_scene(app::load_preset(kPresets, name)); }
 

@@ -18,6 +18,7 @@
 #include "softtune/exact_softness.h"
 #include "softtune/response_fit.h"
 #include "softtune/tune.h"
+#include "engine_test_support.h"
 
 namespace softtune::engines {
 namespace {
@@ -146,17 +147,9 @@ std::vector<double> literal_run(double m, double hertz, double zeta, double dt, 
 
 // ---- helpers --------------------------------------------------------------------------------------------
 
-SettingValues settings(int substeps, bool warm = true) { return {static_cast<double>(substeps), warm ? 1.0 : 0.0}; }
+SettingValues v3_settings(int substeps, bool warm = true) { return {static_cast<double>(substeps), warm ? 1.0 : 0.0}; }
 
-Target target(double hz, double zeta, double m, double dt, SpringConstants spring) {
-  Target t;
-  t.effective_mass = m;
-  t.omega = 2.0 * std::numbers::pi * hz;
-  t.damping_ratio = zeta;
-  t.dt = dt;
-  t.spring = spring;
-  return t;
-}
+using testing::target;
 
 double hertz_of(const Parameters& p) { return *parameter_value(p, "b2DistanceJointDef::hertz"); }
 double ratio_of(const Parameters& p) { return *parameter_value(p, "b2DistanceJointDef::dampingRatio"); }
@@ -224,7 +217,7 @@ TEST(Box2DV3Model, IssueFifteenMeasurements) {
   // 10.0 Hz and zeta 0.71 (softtune's implicit Euler predicted 8.49 / 0.42); exact mode (k', c' for
   // implicit Euler, here at zeta 0.1) asked 10 Hz gives 17 Hz.
   const double m = 1.0, dt = 1.0 / 60.0, omega = 2.0 * std::numbers::pi * 10.0;
-  const EngineReport plain = kBox2DV3Model.report(target(10.0, 0.0, m, dt, spring_constants(m, omega, 0.0)), settings(1));
+  const EngineReport plain = kBox2DV3Model.report(target(10.0, 0.0, m, dt, spring_constants(m, omega, 0.0)), v3_settings(1));
   EXPECT_NEAR(hertz_of(plain.parameters), 10.0, 1e-12);
   EXPECT_EQ(ratio_of(plain.parameters), 0.0);
   ASSERT_TRUE(plain.predicted.frequency_hz);
@@ -235,7 +228,7 @@ TEST(Box2DV3Model, IssueFifteenMeasurements) {
   EXPECT_NEAR(*fit.damping_ratio, *plain.predicted.damping_ratio, 0.002);
 
   const ExactSpring e = exact_spring(m, omega, 0.1, dt);
-  const EngineReport exact_mode = kBox2DV3Model.report(target(10.0, 0.1, m, dt, e.spring), settings(1));
+  const EngineReport exact_mode = kBox2DV3Model.report(target(10.0, 0.1, m, dt, e.spring), v3_settings(1));
   ASSERT_TRUE(exact_mode.predicted.frequency_hz);
   EXPECT_NEAR(*exact_mode.predicted.frequency_hz, 17.0, 0.05);
   const ResponseFit fit2 = fit_response(
@@ -278,7 +271,7 @@ TEST(Box2DV3Model, ExactMeetsTheRequestInTheLiteralLoop) {
     for (double hz : {0.5, 2.0, 6.0}) {
       for (double zeta : {0.2, 0.5, 1.0, 2.0}) {
         const double m = 0.7, dt = 1.0 / 60.0, omega = 2.0 * std::numbers::pi * hz;
-        const EngineReport r = kBox2DV3Model.report(target(hz, zeta, m, dt, spring_constants(m, omega, zeta)), settings(n));
+        const EngineReport r = kBox2DV3Model.report(target(hz, zeta, m, dt, spring_constants(m, omega, zeta)), v3_settings(n));
         if (zeta < box2d_v3_min_damping_ratio(omega, dt / n) + 0.01) continue;
         ASSERT_TRUE(r.exact && r.exact_predicted) << n << " " << hz << " " << zeta;
         EXPECT_NEAR(*r.exact_predicted->frequency_hz, hz, hz * kExactFrequencyTolerance);
@@ -334,7 +327,7 @@ TEST(Box2DV3Model, RefusesWhatTheEngineDividesByZeroOn) {
   const double m = 1.0, dt = 1.0 / 60.0, omega = 2.0 * std::numbers::pi * 5.0;
   for (int n : {1, 4}) {
     const ExactSpring e = exact_spring(m, omega, 0.0, dt);
-    const EngineReport r = kBox2DV3Model.report(target(5.0, 0.0, m, dt, e.spring), settings(n));
+    const EngineReport r = kBox2DV3Model.report(target(5.0, 0.0, m, dt, e.spring), v3_settings(n));
     ASSERT_FALSE(r.warnings.empty());
     EXPECT_EQ(r.warnings[0].code, WarningCode::engine_refuses) << n;
     EXPECT_FALSE(r.predicted.frequency_hz);
@@ -369,7 +362,7 @@ TEST(Box2DV3Model, TuneCarriesTheReportWithTheRequestsSettings) {
   }
   ASSERT_LT(index, models.size());
   request.engine_settings.resize(models.size());
-  request.engine_settings[index] = settings(8, false);
+  request.engine_settings[index] = v3_settings(8, false);
   const TuneResult result = tune(request);
   const EngineReport& r = result.engine_reports[index];
   EXPECT_EQ(*parameter_value(r.settings, "subStepCount"), 8.0);

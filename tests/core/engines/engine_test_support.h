@@ -11,6 +11,8 @@
 
 namespace softtune::engines::testing {
 
+inline constexpr double kPi = std::numbers::pi;
+
 /// The target of a request for `hz` Hz, damping ratio `zeta`, effective mass `m` (kg), step `h` (s), with
 /// softtune's spring `spring` (k, c of the mode).
 inline Target target(double hz, double zeta, double m, double h, SpringConstants spring) {

@@ -18,7 +18,7 @@
 namespace softtune::engines {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using testing::kPi;
 
 using testing::target;
 
