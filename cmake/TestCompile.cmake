@@ -6,10 +6,9 @@
 # shared header 19.9 s, plus 6.8 s once for the header itself. The code under test (core, scene, the
 # server libraries) keeps the build type's optimisation; only the test files' own code runs at -O1.
 #
-# softtune_test_compile(DIR) gives every executable defined in DIR and below both (and a unity build,
-# cmake/UnityBuild.cmake), reusing the header that
+# softtune_test_compile(DIR) gives every executable defined in DIR and below both, reusing the header that
 # softtune_test_pch compiles once (REUSE_FROM: same compiler, same flags; no header in it depends on a
-# target's own definitions).
+# target's own definitions), and compiles it in unity batches (cmake/UnityBuild.cmake).
 
 include(${CMAKE_CURRENT_LIST_DIR}/UnityBuild.cmake)
 

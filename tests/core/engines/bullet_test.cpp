@@ -21,7 +21,7 @@ using testing::kPi;
 
 using testing::target;
 
-SettingValues settings(double route, int iterations) {
+SettingValues bullet_settings(double route, int iterations) {
   SettingValues v = default_settings(kBulletModel);
   v[kBulletRouteSetting] = route;
   v[kBulletIterationsSetting] = iterations;
@@ -229,7 +229,7 @@ TEST(BulletModel, ErpCfmOldExportIsNotBulletsConvention) {
   // diverge (the 0 of 60).
   const double m = 1e-3, h = 1.0 / 60.0, omega = 2.0 * kPi;
   const SpringConstants s = spring_constants(m, omega, 0.5);
-  const EngineReport r = kBulletModel.report(target(1.0, 0.5, m, h, s), settings(kBulletRouteErpCfm, 10));
+  const EngineReport r = kBulletModel.report(target(1.0, 0.5, m, h, s), bullet_settings(kBulletRouteErpCfm, 10));
   EXPECT_NEAR(*parameter_value(r.parameters, kBulletStopCfm), 1.0 / (h * s.stiffness + s.damping), 1e-3);
   EXPECT_FALSE(r.predicted.stable);
   EXPECT_TRUE(has_warning(r, WarningCode::engine_unstable));
@@ -250,7 +250,7 @@ TEST(BulletModel, ErpCfmExactIsTheClosedForm) {
   const double m = 2.0, h = 1.0 / 120.0, hz = 4.0, zeta = 0.7, omega = 2.0 * kPi * hz;
   for (int n : {4, 10, 40}) {
     const EngineReport r = kBulletModel.report(target(hz, zeta, m, h, spring_constants(m, omega, zeta)),
-                                               settings(kBulletRouteErpCfm, n));
+                                               bullet_settings(kBulletRouteErpCfm, n));
     ASSERT_TRUE(r.exact) << n;
     const double e = std::exp(-zeta * omega * h), theta = omega * h * std::sqrt(1.0 - zeta * zeta);
     const double p = e * e, sum = 2.0 * e * std::cos(theta);
@@ -265,17 +265,17 @@ TEST(BulletModel, ErpCfmCannotHoldLittleDamping) {
   const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * kPi * 5.0;
   // Undamped: g = 0 needs CFM = 1.
   EngineReport r = kBulletModel.report(target(5.0, 0.0, m, h, spring_constants(m, omega, 0.0)),
-                                       settings(kBulletRouteErpCfm, 10));
+                                       bullet_settings(kBulletRouteErpCfm, 10));
   EXPECT_FALSE(r.exact);
   EXPECT_TRUE(has_warning(r, WarningCode::engine_inexact));
   // zeta 0.05 at omega h = 0.52: its exact damping is negative, ERP would exceed 1.
   r = kBulletModel.report(target(5.0, 0.05, m, h, spring_constants(m, omega, 0.05)),
-                          settings(kBulletRouteErpCfm, 10));
+                          bullet_settings(kBulletRouteErpCfm, 10));
   EXPECT_FALSE(r.exact);
   EXPECT_TRUE(has_warning(r, WarningCode::engine_inexact));
   // One sweep ignores the CFM: only g = 1 is reachable.
   r = kBulletModel.report(target(5.0, 0.7, m, h, spring_constants(m, omega, 0.7)),
-                          settings(kBulletRouteErpCfm, 1));
+                          bullet_settings(kBulletRouteErpCfm, 1));
   EXPECT_FALSE(r.exact);
   EXPECT_TRUE(has_warning(r, WarningCode::engine_inexact));
 }
@@ -286,7 +286,7 @@ TEST(BulletModel, ErpCfmNeverExportsOutsideItsRange) {
       for (double hz : {0.5, 5.0, 18.0}) {
         const double m = 3.0, h = 1.0 / 60.0, omega = 2.0 * kPi * hz;
         const EngineReport r = kBulletModel.report(target(hz, zeta, m, h, spring_constants(m, omega, zeta)),
-                                                   settings(kBulletRouteErpCfm, n));
+                                                   bullet_settings(kBulletRouteErpCfm, n));
         if (!r.exact) {
           EXPECT_TRUE(has_warning(r, WarningCode::engine_inexact));
           continue;
@@ -307,7 +307,7 @@ TEST(BulletModel, ErpCfmPlainExportOutsideTheRangeIsFlagged) {
   const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * kPi * 5.0;
   const ExactSpring e = exact_spring(m, omega, 0.02, h);
   ASSERT_LT(e.spring.damping, 0.0);
-  const EngineReport r = kBulletModel.report(target(5.0, 0.02, m, h, e.spring), settings(kBulletRouteErpCfm, 10));
+  const EngineReport r = kBulletModel.report(target(5.0, 0.02, m, h, e.spring), bullet_settings(kBulletRouteErpCfm, 10));
   EXPECT_GT(*parameter_value(r.parameters, kBulletStopErp), 1.0);
   EXPECT_TRUE(has_warning(r, WarningCode::engine_refuses));
 }
@@ -315,7 +315,7 @@ TEST(BulletModel, ErpCfmPlainExportOutsideTheRangeIsFlagged) {
 TEST(BulletModel, ZeroDenominatorIsRefusedNotDivided) {
   const double h = 1.0 / 60.0;
   const EngineReport r = kBulletModel.report(target(5.0, 0.0, 1.0, h, {600.0, -600.0 * h}),
-                                             settings(kBulletRouteErpCfm, 10));
+                                             bullet_settings(kBulletRouteErpCfm, 10));
   EXPECT_TRUE(has_warning(r, WarningCode::engine_refuses));
   EXPECT_FALSE(r.predicted.frequency_hz);
 }

@@ -22,7 +22,7 @@ using testing::kPi;
 
 using testing::target;
 
-SettingValues settings(int collision_steps, double linear_damping, int mode = 0) {
+SettingValues jolt_settings(int collision_steps, double linear_damping, int mode = 0) {
   SettingValues v = default_settings(kJoltModel);
   v[kJoltCollisionSteps] = collision_steps;
   v[kJoltLinearDamping] = linear_damping;
@@ -60,7 +60,7 @@ TEST(JoltModel, StepMapIsDampedImplicitEulerPerCollisionStep) {
 TEST(JoltModel, StandardExportWithoutDampingPredictsImplicitEuler) {
   // SPEC.md: asked 10 Hz free at 60 fps, standard softness gives 8.49 Hz natural with zeta 0.416.
   const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * kPi * 10.0;
-  const EngineReport r = kJoltModel.report(target(10.0, 0.0, m, h, spring_constants(m, omega, 0.0)), settings(1, 0.0));
+  const EngineReport r = kJoltModel.report(target(10.0, 0.0, m, h, spring_constants(m, omega, 0.0)), jolt_settings(1, 0.0));
   ASSERT_TRUE(r.predicted.frequency_hz);
   EXPECT_NEAR(*r.predicted.frequency_hz, 8.49, 0.01);
   EXPECT_NEAR(*r.predicted.damping_ratio, 0.416, 0.001);
@@ -75,7 +75,7 @@ TEST(JoltModel, DefaultLinearDampingAddsItsOwnDampingRatio) {
   // grows by about d / (2 omega) over implicit Euler's.
   const double m = 2.0, h = 1.0 / 240.0, hz = 0.5, omega = 2.0 * kPi * hz;
   const Target t = target(hz, 0.1, m, h, spring_constants(m, omega, 0.1));
-  const EngineReport plain = kJoltModel.report(t, settings(1, 0.0));
+  const EngineReport plain = kJoltModel.report(t, jolt_settings(1, 0.0));
   const EngineReport damped = kJoltModel.report(t, default_settings(kJoltModel));
   EXPECT_NEAR(*damped.predicted.damping_ratio - *plain.predicted.damping_ratio, 0.05 / (2.0 * omega), 2e-4);
 }
@@ -86,7 +86,7 @@ TEST(JoltModel, ExactIsTheExactSpringCorrectedForDamping) {
     for (double zeta : {0.1, 0.5, 1.5}) {
       const double hz = 7.0, omega = 2.0 * kPi * hz, d = 0.05, h = dt / n;
       const EngineReport r = kJoltModel.report(target(hz, zeta, m, dt, spring_constants(m, omega, zeta)),
-                                               settings(n, d, /*StiffnessAndDamping*/ 1));
+                                               jolt_settings(n, d, /*StiffnessAndDamping*/ 1));
       ASSERT_TRUE(r.exact && r.exact_predicted) << n << " " << zeta;
       const ExactSpring e = exact_spring(m, omega, zeta, h);
       const double a = 1.0 - d * h;
@@ -112,7 +112,7 @@ TEST(JoltModel, ExactUndampedIsTheLeastDampedSpringItTakes) {
   // Without linear damping, zeta = 0 needs c + h k = 0 (SpringPart divides by it): the nearest legal spring,
   // c + h k = 2e-4 h k, damps by about 1e-4 omega h and meets the request.
   const double m = 1.0, h = 1.0 / 60.0, hz = 5.0, omega = 2.0 * kPi * hz;
-  const EngineReport r = kJoltModel.report(target(hz, 0.0, m, h, spring_constants(m, omega, 0.0)), settings(1, 0.0, 1));
+  const EngineReport r = kJoltModel.report(target(hz, 0.0, m, h, spring_constants(m, omega, 0.0)), jolt_settings(1, 0.0, 1));
   ASSERT_TRUE(r.exact && r.exact_predicted);
   const double k = *parameter_value(*r.exact, "SpringSettings::mStiffness");
   const double c = *parameter_value(*r.exact, "SpringSettings::mDamping");
@@ -141,16 +141,16 @@ TEST(JoltModel, ExactModeAtZeroDampingIsRefusedNotExported) {
   // softtune's exact mode at zeta = 0 gives c' = -h k': Jolt's softness 1 / (h (c + h k)) is infinite.
   const double m = 1.0, h = 1.0 / 60.0, k = 1000.0;
   for (int mode : {0, 1, 2}) {
-    const EngineReport r = kJoltModel.report(target(5.0, 0.0, m, h, {k, -h * k}), settings(1, 0.05, mode));
+    const EngineReport r = kJoltModel.report(target(5.0, 0.0, m, h, {k, -h * k}), jolt_settings(1, 0.05, mode));
     EXPECT_FALSE(r.predicted.frequency_hz);
     ASSERT_FALSE(r.warnings.empty());
     EXPECT_EQ(r.warnings[0].code, WarningCode::engine_refuses);
     // A rounding remainder of it is refused too.
-    const EngineReport near = kJoltModel.report(target(5.0, 0.0, m, h, {k, -h * k * (1 - 1e-12)}), settings(1, 0.05, mode));
+    const EngineReport near = kJoltModel.report(target(5.0, 0.0, m, h, {k, -h * k * (1 - 1e-12)}), jolt_settings(1, 0.05, mode));
     EXPECT_EQ(near.warnings[0].code, WarningCode::engine_refuses);
   }
   // k <= 0 would make the limit hard.
-  const EngineReport hard = kJoltModel.report(target(5.0, 0.5, m, h, {0.0, 3.0}), settings(1, 0.05, 1));
+  const EngineReport hard = kJoltModel.report(target(5.0, 0.5, m, h, {0.0, 3.0}), jolt_settings(1, 0.05, 1));
   EXPECT_EQ(hard.warnings[0].code, WarningCode::engine_refuses);
 }
 
@@ -158,9 +158,9 @@ TEST(JoltModel, ModesTypeTheSameSpring) {
   const double m = 4.0, h = 1.0 / 120.0, hz = 3.0, zeta = 0.3, omega = 2.0 * kPi * hz;
   const SpringConstants s = spring_constants(m, omega, zeta);
   const Target t = target(hz, zeta, m, h, s);
-  const EngineReport f = kJoltModel.report(t, settings(1, 0.05, 0));
-  const EngineReport k = kJoltModel.report(t, settings(1, 0.05, 1));
-  const EngineReport n = kJoltModel.report(t, settings(1, 0.05, 2));
+  const EngineReport f = kJoltModel.report(t, jolt_settings(1, 0.05, 0));
+  const EngineReport k = kJoltModel.report(t, jolt_settings(1, 0.05, 1));
+  const EngineReport n = kJoltModel.report(t, jolt_settings(1, 0.05, 2));
   EXPECT_NEAR(*parameter_value(f.parameters, "SpringSettings::mFrequency"), hz, 1e-12);
   EXPECT_NEAR(*parameter_value(f.parameters, "SpringSettings::mDamping"), zeta, 1e-12);
   EXPECT_NEAR(*parameter_value(k.parameters, "SpringSettings::mStiffness"), s.stiffness, 1e-9);
@@ -185,7 +185,7 @@ TEST(JoltModel, VelocityAndPositionStepsChangeNothing) {
 TEST(JoltModel, DampingThatStopsTheBodyHasNoExact) {
   // mLinearDamping h >= 1 zeroes the velocity every step (max(0, 1 - d h)).
   const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * kPi * 2.0;
-  const EngineReport r = kJoltModel.report(target(2.0, 0.5, m, h, spring_constants(m, omega, 0.5)), settings(1, 60.0));
+  const EngineReport r = kJoltModel.report(target(2.0, 0.5, m, h, spring_constants(m, omega, 0.5)), jolt_settings(1, 60.0));
   EXPECT_FALSE(r.exact);
   EXPECT_EQ(r.warnings.back().code, WarningCode::engine_inexact);
 }
@@ -209,7 +209,7 @@ TEST(JoltModel, NoExportBreaksTheEnginesRulesOverASweep) {
               for (bool exact_mode : {false, true}) {
                 const double fps = 60.0, h = 1.0 / fps, hz = ratio * fps, omega = 2.0 * kPi * hz;
                 const SpringConstants s = exact_mode ? exact_spring(m, omega, zeta, h).spring : spring_constants(m, omega, zeta);
-                const EngineReport r = kJoltModel.report(target(hz, zeta, m, h, s), settings(n, d, mode));
+                const EngineReport r = kJoltModel.report(target(hz, zeta, m, h, s), jolt_settings(n, d, mode));
                 if (!r.predicted.frequency_hz) {
                   ++refused;
                   EXPECT_EQ(r.warnings.front().code, WarningCode::engine_refuses);

@@ -22,7 +22,7 @@ using testing::kPi;
 
 using testing::target;
 
-SettingValues settings(MujocoIntegrator integrator = MujocoIntegrator::euler) {
+SettingValues mujoco_settings(MujocoIntegrator integrator = MujocoIntegrator::euler) {
   SettingValues v = default_settings(kMujocoModel);
   v[kMujocoIntegrator] = static_cast<double>(integrator);
   return v;
@@ -140,7 +140,7 @@ TEST(MujocoModel, StandardExportOfAnUndampedSpringIsDirectAndSymplectic) {
   // at cos(theta) = 1 - (omega h)^2 / 2 (not implicit Euler's 8.49 Hz, zeta 0.416).
   const double m = 2.0, h = 1.0 / 60.0, omega = 2.0 * kPi * 10.0;
   const EngineReport r =
-      kMujocoModel.report(target(10.0, 0.0, m, h, spring_constants(m, omega, 0.0)), settings());
+      kMujocoModel.report(target(10.0, 0.0, m, h, spring_constants(m, omega, 0.0)), mujoco_settings());
   EXPECT_NEAR(*parameter_value(r.parameters, "solref[0]"), -omega * omega, 1e-9);
   EXPECT_EQ(*parameter_value(r.parameters, "solref[1]"), 0.0);
   EXPECT_EQ(*parameter_value(r.parameters, "solimp[0]"), 0.95);
@@ -156,7 +156,7 @@ TEST(MujocoModel, StandardExportOfAnUndampedSpringIsDirectAndSymplectic) {
 TEST(MujocoModel, StandardExportOfADampedSpringIsTimeconstAndDampratio) {
   const double m = 0.01, h = 1.0 / 240.0, omega = 2.0 * kPi * 5.0, zeta = 0.4;
   const EngineReport r =
-      kMujocoModel.report(target(5.0, zeta, m, h, spring_constants(m, omega, zeta)), settings());
+      kMujocoModel.report(target(5.0, zeta, m, h, spring_constants(m, omega, zeta)), mujoco_settings());
   EXPECT_NEAR(*parameter_value(r.parameters, "solref[0]"), 1.0 / (zeta * omega), 1e-12);
   EXPECT_NEAR(*parameter_value(r.parameters, "solref[1]"), zeta, 1e-12);
   // Semi-implicit Euler's poles for beta = 2 zeta omega, kappa = omega^2: z^2 - (2 - hb - h^2 k) z + 1 - hb.
@@ -174,7 +174,7 @@ TEST(MujocoModel, ExactIsTheSemiImplicitEulerClosedForm) {
       const double h = 1.0 / 100.0, hz = fh / h, omega = 2.0 * kPi * hz, m = 5.0;
       for (MujocoIntegrator i : {MujocoIntegrator::euler, MujocoIntegrator::implicit}) {
         const EngineReport r = kMujocoModel.report(target(hz, zeta, m, h, spring_constants(m, omega, zeta)),
-                                                   settings(i));
+                                                   mujoco_settings(i));
         ASSERT_TRUE(r.exact && r.exact_predicted) << zeta << " " << fh;
         expect_poles_match(*r.exact, i, omega, zeta, h);
         EXPECT_NEAR(*r.exact_predicted->frequency_hz / hz, 1.0, 1e-9);
@@ -198,7 +198,7 @@ TEST(MujocoModel, Rk4ExactMatchesWhereSolrefCanDampAndSaysWhereNot) {
   for (auto [zeta, fh] : {std::pair{0.2, 0.2}, std::pair{0.7, 0.2}, std::pair{1.5, 0.05}}) {
     const double hz = fh / h, omega = 2.0 * kPi * hz;
     const EngineReport r = kMujocoModel.report(target(hz, zeta, m, h, spring_constants(m, omega, zeta)),
-                                               settings(MujocoIntegrator::rk4));
+                                               mujoco_settings(MujocoIntegrator::rk4));
     ASSERT_TRUE(r.exact) << zeta;
     expect_poles_match(*r.exact, MujocoIntegrator::rk4, omega, zeta, h);
   }
@@ -206,7 +206,7 @@ TEST(MujocoModel, Rk4ExactMatchesWhereSolrefCanDampAndSaysWhereNot) {
   // cancelling it needs negative damping.
   const double hz = 1.9 / (2.0 * kPi * h), omega = 2.0 * kPi * hz;
   const EngineReport r = kMujocoModel.report(target(hz, 0.0, m, h, spring_constants(m, omega, 0.0)),
-                                             settings(MujocoIntegrator::rk4));
+                                             mujoco_settings(MujocoIntegrator::rk4));
   EXPECT_FALSE(r.exact);
   bool inexact = false;
   for (const Warning& w : r.warnings) inexact |= w.code == WarningCode::engine_inexact && w.engine == "mujoco";
@@ -218,7 +218,7 @@ TEST(MujocoModel, ExactModesNegativeDampingIsReportedAsReplaced) {
   // MuJoCo uses (0.02, 1), floored to 2h at 60 fps.
   const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * kPi * 5.0;
   const ExactSpring ex = exact_spring(m, omega, 0.0, h);
-  const EngineReport r = kMujocoModel.report(target(5.0, 0.0, m, h, ex.spring), settings());
+  const EngineReport r = kMujocoModel.report(target(5.0, 0.0, m, h, ex.spring), mujoco_settings());
   ASSERT_FALSE(r.warnings.empty());
   EXPECT_EQ(r.warnings[0].code, WarningCode::engine_refuses);
   // What it then does: timeconst 2h, dampratio 1: beta = 1 / h, kappa = 1 / (2h)^2.
@@ -234,7 +234,7 @@ TEST(MujocoModel, DirectExportOfAStiffDampedSpringIsUnstable) {
   // = 3.8 > 2: MuJoCo's explicit constraint force diverges (the NaN of the issue).
   const double m = 1.0, h = 1.0 / 60.0, hz = 0.3 / h, omega = 2.0 * kPi * hz;
   const EngineReport r =
-      kMujocoModel.report(target(hz, 1.0, m, h, spring_constants(m, omega, 1.0)), settings());
+      kMujocoModel.report(target(hz, 1.0, m, h, spring_constants(m, omega, 1.0)), mujoco_settings());
   EXPECT_LT(*parameter_value(r.parameters, "solref[0]"), 0.0);
   EXPECT_FALSE(r.predicted.stable);
   bool unstable = false;
@@ -249,9 +249,9 @@ TEST(MujocoModel, AnyFlatImpedanceGivesTheSameResponse) {
   // spring whatever d_width the user keeps.
   const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * kPi * 4.0, zeta = 0.3;
   const Target t = target(4.0, zeta, m, h, spring_constants(m, omega, zeta));
-  const EngineReport base = kMujocoModel.report(t, settings());
+  const EngineReport base = kMujocoModel.report(t, mujoco_settings());
   for (double d : {0.0001, 0.5, 0.9999}) {
-    SettingValues v = settings();
+    SettingValues v = mujoco_settings();
     v[kMujocoSolimp1] = d;
     const EngineReport r = kMujocoModel.report(t, v);
     EXPECT_EQ(*parameter_value(r.parameters, "solimp[0]"), d);
@@ -272,10 +272,10 @@ TEST(MujocoModel, DiagRatioIsTheSolversRealisedFraction) {
   EXPECT_NEAR(g.kappa, ad / (1.0 + ad) * d * 400.0 / (d * d), 1e-9);
   // The exact solref compensates it: the map MuJoCo steps has the request's poles.
   const double m = 1.0, hz = 3.0, omega = 2.0 * kPi * hz, zeta = 0.2;
-  SettingValues v = settings();
+  SettingValues v = mujoco_settings();
   v[kMujocoDiagRatio] = rho;
   const Target t = target(hz, zeta, m, h, spring_constants(m, omega, zeta));
-  const EngineReport r = kMujocoModel.report(t, v), base = kMujocoModel.report(t, settings());
+  const EngineReport r = kMujocoModel.report(t, v), base = kMujocoModel.report(t, mujoco_settings());
   ASSERT_TRUE(r.exact && base.exact);
   auto gains_of = [&](const Parameters& p, double ratio) {
     return mujoco_gains(*parameter_value(p, "solref[0]"), *parameter_value(p, "solref[1]"), d, d, h, true, ratio);
@@ -289,7 +289,7 @@ TEST(MujocoModel, DiagRatioIsTheSolversRealisedFraction) {
 }
 
 TEST(MujocoModel, NoSpringIsAZeroDirectSolref) {
-  const EngineReport r = kMujocoModel.report(target(0.0, 0.0, 1.0, 1.0 / 60.0, {0.0, 0.0}), settings());
+  const EngineReport r = kMujocoModel.report(target(0.0, 0.0, 1.0, 1.0 / 60.0, {0.0, 0.0}), mujoco_settings());
   EXPECT_FALSE(std::signbit(*parameter_value(r.parameters, "solref[0]")));
   EXPECT_FALSE(std::signbit(*parameter_value(r.parameters, "solref[1]")));
   EXPECT_FALSE(r.exact);
@@ -303,7 +303,7 @@ TEST(MujocoModel, ExactNeverExportsWhatMujocoReplaces) {
         for (int substeps : {1, 8}) {
           const double h = 1.0 / (60.0 * substeps), hz = fh * 60.0, omega = 2.0 * kPi * hz;
           const EngineReport r = kMujocoModel.report(
-              target(hz, zeta, 1.0, h, spring_constants(1.0, omega, zeta)), settings(i));
+              target(hz, zeta, 1.0, h, spring_constants(1.0, omega, zeta)), mujoco_settings(i));
           if (!r.exact) continue;
           const double s0 = *parameter_value(*r.exact, "solref[0]"), s1 = *parameter_value(*r.exact, "solref[1]");
           EXPECT_FALSE((s0 > 0.0) != (s1 > 0.0));

@@ -27,7 +27,7 @@ constexpr double kFltMax = 3.4028234663852886e38;
 
 using testing::target;
 
-SettingValues settings(double solver, double position, double velocity, double drive) {
+SettingValues physx_settings(double solver, double position, double velocity, double drive) {
   return {solver, position, velocity, drive};
 }
 
@@ -166,9 +166,9 @@ TEST(PhysxModel, TgsMapIsTheTgsLoop) {
 
 TEST(PhysxModel, SubstepsAreOneForPgsAndThePositionIterationsForTgs) {
   EXPECT_EQ(physx_substeps(default_settings(kPhysxModel)), 1);
-  EXPECT_EQ(physx_substeps(settings(0, 17, 1, 0)), 1);
-  EXPECT_EQ(physx_substeps(settings(1, 4, 1, 0)), 4);
-  EXPECT_EQ(physx_substeps(settings(1, 255, 0, 1)), 255);
+  EXPECT_EQ(physx_substeps(physx_settings(0, 17, 1, 0)), 1);
+  EXPECT_EQ(physx_substeps(physx_settings(1, 4, 1, 0)), 4);
+  EXPECT_EQ(physx_substeps(physx_settings(1, 255, 0, 1)), 255);
   // The defaults: PGS, 4 position and 1 velocity iteration, a force drive.
   EXPECT_EQ(default_settings(kPhysxModel), (SettingValues{0, 4, 1, 0}));
 }
@@ -208,7 +208,7 @@ TEST(PhysxModel, StandardExportPredictsImplicitEulersPoles) {
 TEST(PhysxModel, AccelerationDriveIsMassFree) {
   // The acceleration drive exports k / m and d / m and predicts the same for any mass.
   const double h = 1.0 / 60.0, hz = 4.0, zeta = 0.3, omega = 2.0 * std::numbers::pi * hz;
-  const SettingValues acc = settings(0, 4, 1, 1);
+  const SettingValues acc = physx_settings(0, 4, 1, 1);
   const EngineReport light = kPhysxModel.report(target(hz, zeta, 0.01, h, spring_constants(0.01, omega, zeta)), acc);
   const EngineReport heavy = kPhysxModel.report(target(hz, zeta, 500.0, h, spring_constants(500.0, omega, zeta)), acc);
   EXPECT_NEAR(light.parameters[0].value, omega * omega, 1e-9 * omega * omega);
@@ -231,7 +231,7 @@ TEST(PhysxModel, ExactIsTheExactSpringAtTheSubstep) {
   const double m = 0.5, h = 1.0 / 60.0, hz = 6.0, omega = 2.0 * std::numbers::pi * hz;
   for (int n : {1, 4, 16}) {
     for (double zeta : {0.7, 1.0, 1.8}) {
-      const SettingValues s = settings(n == 1 ? 0 : 1, n, 1, 0);
+      const SettingValues s = physx_settings(n == 1 ? 0 : 1, n, 1, 0);
       const EngineReport r = kPhysxModel.report(target(hz, zeta, m, h, spring_constants(m, omega, zeta)), s);
       ASSERT_TRUE(r.exact && r.exact_predicted) << n << " " << zeta;
       const ExactSpring closed = exact_spring(m, omega, zeta, h / n);
@@ -274,7 +274,7 @@ TEST(PhysxModel, TgsSubstepsReachZeroDampingWithinTheTolerance) {
   // 255 position iterations: the undamped drive's own damping is about omega h / 510 = 0.002 < 0.005.
   const double m = 2.0, h = 1.0 / 60.0, hz = 10.0, omega = 2.0 * std::numbers::pi * hz;
   const EngineReport r =
-      kPhysxModel.report(target(hz, 0.0, m, h, spring_constants(m, omega, 0.0)), settings(1, 255, 1, 0));
+      kPhysxModel.report(target(hz, 0.0, m, h, spring_constants(m, omega, 0.0)), physx_settings(1, 255, 1, 0));
   ASSERT_TRUE(r.exact && r.exact_predicted);
   EXPECT_EQ((*r.exact)[1].value, 0.0);
   EXPECT_NEAR(*r.exact_predicted->frequency_hz, hz, 1e-8 * hz);
@@ -294,7 +294,7 @@ TEST(PhysxModel, NeverExportsOutsideTheLegalRanges) {
   // damping >= 0, both <= FLT_MAX), and an `exact` meets the request as predicted.
   int exported = 0;
   for (const SettingValues& s :
-       {settings(0, 4, 1, 0), settings(0, 4, 1, 1), settings(1, 4, 1, 0), settings(1, 255, 0, 1)}) {
+       {physx_settings(0, 4, 1, 0), physx_settings(0, 4, 1, 1), physx_settings(1, 4, 1, 0), physx_settings(1, 255, 0, 1)}) {
     for (double hz : {0.1, 3.0, 40.0, 1000.0}) {
       for (double zeta : {0.0, 1e-3, 0.3, 1.0, 5.0, 50.0}) {
         for (double m : {1e-6, 1.0, 1e6}) {
@@ -360,9 +360,9 @@ std::optional<ResponseFit> run_loop(const Parameters& p, const SettingValues& s,
 TEST(PhysxModel, LiteralFloatLoopsMeetTheReportOverTheGrid) {
   std::size_t index = 0;
   while (engine_models()[index] != &kPhysxModel) ++index;
-  const SettingValues variants[] = {settings(0, 4, 1, 0), settings(0, 4, 1, 1), settings(1, 4, 1, 0),
-                                    settings(1, 4, 1, 1), settings(1, 1, 1, 0), settings(1, 16, 0, 0),
-                                    settings(0, 1, 0, 0), settings(1, 255, 1, 1)};
+  const SettingValues variants[] = {physx_settings(0, 4, 1, 0), physx_settings(0, 4, 1, 1), physx_settings(1, 4, 1, 0),
+                                    physx_settings(1, 4, 1, 1), physx_settings(1, 1, 1, 0), physx_settings(1, 16, 0, 0),
+                                    physx_settings(0, 1, 0, 0), physx_settings(1, 255, 1, 1)};
   Worst standard, exact, versus_request;
   int cases = 0, refused = 0, inexact = 0, unfit = 0, at = 0;
   for (double ratio : {0.02, 0.08, 0.17, 0.3}) {

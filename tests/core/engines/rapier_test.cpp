@@ -22,7 +22,7 @@ using testing::kPi;
 
 using testing::target;
 
-SettingValues settings(int iterations, int model = 0, double damping = 0.0) {
+SettingValues rapier_settings(int iterations, int model = 0, double damping = 0.0) {
   SettingValues v = default_settings(kRapierModel);
   v[kRapierNumSolverIterations] = iterations;
   v[kRapierMotorModel] = model;
@@ -87,12 +87,12 @@ TEST(RapierModel, SolverIterationsAreSubsteps) {
   const double m = 1.0, hz = 10.0, omega = 2.0 * kPi * hz;
   const SpringConstants s = spring_constants(m, omega, 0.0);
   const EngineReport r = kRapierModel.report(target(hz, 0.0, m, 1.0 / 60.0, s), default_settings(kRapierModel));
-  const EngineReport one = kRapierModel.report(target(hz, 0.0, m, 1.0 / 240.0, s), settings(1));
+  const EngineReport one = kRapierModel.report(target(hz, 0.0, m, 1.0 / 240.0, s), rapier_settings(1));
   ASSERT_TRUE(r.predicted.frequency_hz && one.predicted.frequency_hz);
   EXPECT_NEAR(*r.predicted.frequency_hz, *one.predicted.frequency_hz, 1e-9);
   EXPECT_NEAR(*r.predicted.damping_ratio, *one.predicted.damping_ratio, 1e-9);
   // ...and with numSolverIterations 1 it is softtune's standard prediction at 60 fps: 8.49 Hz, 0.416.
-  const EngineReport single = kRapierModel.report(target(hz, 0.0, m, 1.0 / 60.0, s), settings(1));
+  const EngineReport single = kRapierModel.report(target(hz, 0.0, m, 1.0 / 60.0, s), rapier_settings(1));
   EXPECT_NEAR(*single.predicted.frequency_hz, 8.49, 0.01);
   EXPECT_NEAR(*single.predicted.damping_ratio, 0.416, 0.001);
 }
@@ -100,8 +100,8 @@ TEST(RapierModel, SolverIterationsAreSubsteps) {
 TEST(RapierModel, MotorModelsTypeTheSameSpring) {
   const double m = 5.0, h = 1.0 / 60.0, hz = 2.0, zeta = 0.4, omega = 2.0 * kPi * hz;
   const SpringConstants s = spring_constants(m, omega, zeta);
-  const EngineReport a = kRapierModel.report(target(hz, zeta, m, h, s), settings(4, 0));
-  const EngineReport f = kRapierModel.report(target(hz, zeta, m, h, s), settings(4, 1));
+  const EngineReport a = kRapierModel.report(target(hz, zeta, m, h, s), rapier_settings(4, 0));
+  const EngineReport f = kRapierModel.report(target(hz, zeta, m, h, s), rapier_settings(4, 1));
   EXPECT_EQ(a.parameters[0].choice, "AccelerationBased");
   EXPECT_NEAR(*parameter_value(a.parameters, "JointMotor::stiffness"), omega * omega, 1e-9);
   EXPECT_NEAR(*parameter_value(a.parameters, "JointMotor::damping"), 2.0 * zeta * omega, 1e-12);
@@ -115,7 +115,7 @@ TEST(RapierModel, ExactIsTheExactSpringAtTheSubstep) {
   for (int n : {1, 4, 8}) {
     for (double zeta : {0.05, 0.7, 2.0}) {
       const double hz = 9.0, omega = 2.0 * kPi * hz;
-      const EngineReport r = kRapierModel.report(target(hz, zeta, m, dt, spring_constants(m, omega, zeta)), settings(n, 1));
+      const EngineReport r = kRapierModel.report(target(hz, zeta, m, dt, spring_constants(m, omega, zeta)), rapier_settings(n, 1));
       ASSERT_TRUE(r.exact && r.exact_predicted) << n << " " << zeta;
       const ExactSpring e = exact_spring(m, omega, zeta, dt / n);
       EXPECT_NEAR(*parameter_value(*r.exact, "JointMotor::stiffness"), e.spring.stiffness, 1e-12 * e.spring.stiffness);
@@ -152,19 +152,19 @@ TEST(RapierModel, SoftExactExportAtTheFrameStepIsRefused) {
   EXPECT_FALSE(r.predicted.frequency_hz);
   EXPECT_EQ(r.warnings[0].code, WarningCode::engine_refuses);
   EXPECT_EQ(r.warnings[0].engine, "rapier");
-  const EngineReport one = kRapierModel.report(target(5.0, 0.0, m, h, {k, -h * k * (1 - 1e-13)}), settings(1));
+  const EngineReport one = kRapierModel.report(target(5.0, 0.0, m, h, {k, -h * k * (1 - 1e-13)}), rapier_settings(1));
   EXPECT_EQ(one.warnings[0].code, WarningCode::engine_refuses);
 }
 
 TEST(RapierModel, LinearDampingIsCompensatedBySolving) {
   const double m = 1.0, dt = 1.0 / 60.0, hz = 3.0, zeta = 0.2, omega = 2.0 * kPi * hz;
-  const EngineReport r = kRapierModel.report(target(hz, zeta, m, dt, spring_constants(m, omega, zeta)), settings(4, 0, 0.5));
+  const EngineReport r = kRapierModel.report(target(hz, zeta, m, dt, spring_constants(m, omega, zeta)), rapier_settings(4, 0, 0.5));
   ASSERT_TRUE(r.exact && r.exact_predicted);
   EXPECT_NEAR(*r.exact_predicted->frequency_hz, hz, hz * kExactFrequencyTolerance);
   EXPECT_NEAR(*r.exact_predicted->damping_ratio, zeta, kExactDampingTolerance);
   // Undamped cannot be reached through the damping at a low frequency: the nearest is reported.
   const double slow = 2.0 * kPi * 0.5;
-  const EngineReport u = kRapierModel.report(target(0.5, 0.0, m, dt, spring_constants(m, slow, 0.0)), settings(4, 0, 0.5));
+  const EngineReport u = kRapierModel.report(target(0.5, 0.0, m, dt, spring_constants(m, slow, 0.0)), rapier_settings(4, 0, 0.5));
   EXPECT_FALSE(u.exact);
   EXPECT_EQ(u.warnings.back().code, WarningCode::engine_inexact);
 }
@@ -186,7 +186,7 @@ TEST(RapierModel, NoExportBreaksTheEnginesRulesOverASweep) {
               for (bool exact_mode : {false, true}) {
                 const double fps = 60.0, h = 1.0 / fps, hz = ratio * fps, omega = 2.0 * kPi * hz;
                 const SpringConstants s = exact_mode ? exact_spring(m, omega, zeta, h).spring : spring_constants(m, omega, zeta);
-                const EngineReport r = kRapierModel.report(target(hz, zeta, m, h, s), settings(n, model, d));
+                const EngineReport r = kRapierModel.report(target(hz, zeta, m, h, s), rapier_settings(n, model, d));
                 if (!r.predicted.frequency_hz) {
                   ++refused;
                   EXPECT_EQ(r.warnings.front().code, WarningCode::engine_refuses);
