@@ -32,12 +32,22 @@ const FIELD_WORDS = {
   oscillation: 'the oscillation', substeps: 'the substeps', fps: 'the frame rate', mode: 'the mode',
 };
 
+/// Words that make what follows them prose, not a field name: "no mode of the scene" keeps its "mode",
+/// while "one of effective_mass or constraint" names two fields.
+const DETERMINERS = ['the', 'a', 'an', 'no', 'each', 'every', 'its', 'this', 'that', 'any', 'which', 'one'];
+
+/// A field name standing alone: a whole word, not after a determiner, not part of a dotted path
+/// ("modal_tuning.targets.0.mode" is left whole).
+function fieldPattern(field) {
+  return new RegExp(`(?<!\\b(?:${DETERMINERS.join('|')})\\s)(?<![.\\w])${field}(?![.\\w])`, 'gi');
+}
+
 /// A problem's detail in a designer's words: "give exactly one of effective_mass or constraint" reads
 /// "give exactly one of the effective mass or a 2-D constraint"; a detail starting with "must" gets the
 /// control's name in front ("Frame rate must be > 0").
 export function designerMessage(detail, label) {
   let text = String(detail ?? '');
-  for (const [field, words] of Object.entries(FIELD_WORDS)) text = text.replace(new RegExp(`\\b${field}\\b`, 'g'), words);
+  for (const [field, words] of Object.entries(FIELD_WORDS)) text = text.replace(fieldPattern(field), words);
   if (label && /^(must|is|has|needs)\b/.test(text)) text = `${label} ${text}`;
   return text ? text[0].toUpperCase() + text.slice(1) : text;
 }

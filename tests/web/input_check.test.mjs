@@ -9,4 +9,8 @@ test('API details read in designer words', () => {
     'Give exactly one of the effective mass or a 2-D constraint');
   assert.equal(designerMessage('must be > 0', 'Frame rate'), 'Frame rate must be > 0');
   assert.equal(designerMessage('fps * substeps must be <= 1e6', 'Substeps per frame'), 'The frame rate * the substeps must be <= 1e6');
+  // Prose words that are also field names stay prose ("No the mode of the scene..." was shown once).
+  assert.equal(designerMessage('no mode of the scene moves chassis in heave', 'Heave'), 'No mode of the scene moves chassis in heave');
+  assert.equal(designerMessage('each fps of the rates must be > 0', ''), 'Each fps of the rates must be > 0');
+  assert.equal(designerMessage('modal_tuning.targets.0.mode is unknown', ''), 'Modal_tuning.targets.0.mode is unknown');
 });
