@@ -40,12 +40,16 @@ struct JobState {
   bool finished = false;
   std::string error;
   std::shared_ptr<const Preview> result;
+  // The preview finish() is building: it holds the frames from their move until complete() (frame_png()
+  // serves them from here in that window, when `pngs` is already empty).
+  std::shared_ptr<const Preview> building;
 
   void complete(std::shared_ptr<const Preview> preview, std::string failure) {
     {
       std::lock_guard lock(mutex);
       result = std::move(preview);
       error = std::move(failure);
+      building.reset();
       finished = true;
     }
     cv.notify_all();
@@ -108,6 +112,7 @@ std::optional<std::string> PreviewJob::frame_png(int n) const {
     if (!state_->result) return std::nullopt;
     return state_->result->frames_png[n];
   }
+  if (state_->building) return state_->building->frames_png[n];
   if (!state_->ready || !state_->ready[n].load(std::memory_order_acquire)) return std::nullopt;
   return state_->pngs[n];
 }
@@ -289,6 +294,7 @@ void FramePipeline::finish(JobState& job) {
       {
         std::lock_guard lock(job.mutex);  // frame_png() may be reading a frame of this job
         preview->frames_png = std::move(job.pngs);
+        job.building = preview;  // frame_png() reads the frames here until complete()
       }
       preview->frame_times_s = job.frames.times_s;
       if (preview->frame_times_s.size() != preview->frames_png.size()) {

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "png_decode.h"
@@ -263,6 +264,32 @@ TEST(FramePipeline, AnEncodedFrameIsServedBeforeTheOthersFinish) {
   EXPECT_EQ(job->progress().ready, 6);
   EXPECT_EQ(*first, preview->frames_png[0]);
   EXPECT_EQ(job->frame_png(1), preview->frames_png[1]);
+}
+
+// A frame once served stays served while the job finishes: finish() moves the frames into the preview
+// before it encodes the filmstrip and marks the job finished, and a reader in that window once read the
+// moved-from frames (a null dereference that took the server down under the page's polling).
+TEST(FramePipeline, AFrameStaysServedWhileTheJobFinishes) {
+  FramePipeline p(fake_options());
+  PreviewSettings large = small(24);
+  large.size = {1920, 1080};  // a filmstrip of that size takes long enough to encode for the reads to land in it
+  // The window is a few ms per job: several jobs make a miss unlikely (one job hit it in about one run of three).
+  for (int round = 0; round < 6; ++round) {
+    const auto job = p.submit("finishing " + std::to_string(round), large, [] { return sliding_box(24); });
+    while (job->progress().ready < 1) std::this_thread::yield();
+    const std::optional<std::string> first = job->frame_png(0);
+    ASSERT_TRUE(first.has_value());
+    int reads = 0;
+    while (!job->progress().finished) {
+      const std::optional<std::string> again = job->frame_png(0);
+      ASSERT_TRUE(again.has_value()) << "after " << reads << " reads";
+      ASSERT_EQ(*again, *first);
+      ++reads;
+    }
+    EXPECT_GT(reads, 0);
+    EXPECT_EQ(job->frame_png(0), first);
+    EXPECT_EQ(job->frame_png(23), job->wait()->frames_png[23]);
+  }
 }
 
 TEST(FramePipeline, AFailedFrameFailsTheJobAndIsNotCached) {
