@@ -17,12 +17,12 @@ import { fetchPresetScene, fillJointPicker, fillPresetList, isBox2dScene } from 
 import { PreviewPlayer } from './preview.js';
 import { showEngines, watchEngineValues } from './engine_table.js';
 import { chainField, showChain } from './chain.js';
-import { copyText, fmt, showNumbers, showStability, showSummary } from './results.js';
-import { probeUnit, showJoints, showProbes, tunedJoints } from './simulate_panel.js';
+import { chosenVerdict, copyText, fmt, showModalSummary, showNumbers, showStability, showSummary } from './results.js';
+import { probeUnit, showJoints, showModalTargets, showProbes, tunedJoints } from './simulate_panel.js';
 import { identifyOverlay, installIdentify, showIdentified } from './identify.js';
-import { modalScene, showModes } from './modes.js';
+import { showModes } from './modes.js';
 import {
-  fromQuery, presetRequest, previewRequest, readForm, sceneTuning, stateFromScene, toQuery, tuneRequest, tuningFields,
+  fromQuery, presetRequest, previewRequest, readForm, stateFromScene, toQuery, tuneRequest, tuningFields,
   writeForm,
 } from './state.js';
 
@@ -51,7 +51,6 @@ const channels = { tune: new Latest(), simulate: new Latest(), accuracy: new Lat
 let words = {};          // oscillation word -> damping ratio, from the server's OpenAPI document
 let presetScene = null;  // the scene document of the picked preset, once loaded
 let presetJoints = null; // a Box2D preset's tuned joints (their masses come from its bodies), once simulated
-let pickedMode = null;   // {body, mode} the sliders tune (modes.js), or null: each spring on its own mass
 let pending = 0;
 
 function busy(delta) {
@@ -135,6 +134,7 @@ function onInput(event) {
   if (!t.name) return;
   if (t.name === 'osc' && t.value in words) $('zeta').value = String(words[t.value]);
   if (t.name === 'zeta') for (const r of form.querySelectorAll('input[name="osc"]')) r.checked = false;
+  if (t.name === 'target' && t.type === 'radio') $('target').value = t.value;  // the hidden field the URL keeps
   if (t.name === 'preset') {
     if (event.type !== 'change') return;
     loadPreset(t.value, true);
@@ -307,14 +307,11 @@ function unavailable(what) {
   return `${what} is not available on this server.`;
 }
 
-/// What to simulate: the picked preset tuned by the page (server/app/scene_tuning.h), with the picked mode
-/// as the target of its tuned joints when there is one (modes.js), or a 1-D oscillator with the effective
-/// mass the tune answer computed (from the mass or the 2-D constraint).
+/// What to simulate: the picked preset tuned by the page (server/app/scene_tuning.h), with the mode the
+/// `target` control picks as the target of its tuned joints (state.js presetRequest), or a 1-D oscillator
+/// with the effective mass the tune answer computed (from the mass or the 2-D constraint).
 function simulateRequest(state, tune) {
-  if (state.preset && pickedMode && presetScene) {
-    return { scene: modalScene(presetScene, tuningFields(state), pickedMode), tuning: sceneTuning(state) };
-  }
-  if (state.preset) return presetRequest(state);
+  if (state.preset) return presetRequest(state, presetScene);
   const f = tune.requested?.frequency_hz ?? 0;
   return {
     name: 'custom',
@@ -336,9 +333,14 @@ function showPresetJoints(state, doc) {
   showJoints($('joints').querySelector('tbody'), joints, picked);
   $('joints').closest('.scroll').hidden = joints.length === 0;
   select.disabled = joints.length === 0;
+  const joint = joints.find((j) => j.id === picked);
+  const mass = `${fmt(joint?.model_mass)} ${joint?.angular ? 'kg m²' : 'kg'} of effective mass from its bodies`;
+  const mode = doc.modal_tuning?.targets?.[0]?.mode;
   $('joint-note').textContent = joints.length === 0
     ? 'This scene has no designer-tuned joint: the tuning changes only its step (fps, substeps); the numbers tune the body below.'
-    : `The numbers describe ${picked}: ${fmt(joints.find((j) => j.id === picked)?.model_mass)} ${joints.find((j) => j.id === picked)?.angular ? 'kg m²' : 'kg'} of effective mass from its bodies. Every joint listed takes this tuning.`;
+    : mode
+      ? `The sliders tune the ${mode}: softtune solves the joints' k and c so that this mode has the asked frequency and damping (the table below lists them). The numbers describe ${picked} alone, on its own ${mass}.`
+      : `The numbers describe ${picked}: ${mass}. Every joint listed takes this tuning.`;
   if (first) {
     // The first joint is the preset's default: a link names a joint only when it picks another.
     urlDefaults = { ...urlDefaults, joint: joints[0]?.id ?? '' };
@@ -365,6 +367,11 @@ async function runSimulate(state, tune) {
     const doc = await tracked(channels.simulate.run((signal) => callJson('POST', 'api/v1/simulate', simulateRequest(state, tune), signal)));
     if (doc === Latest.stale) return;
     if (box2dPreset(state)) showPresetJoints(state, doc);
+    const modal = showModalTargets($('modal-targets'), $('modal-note'), doc.modal_tuning);
+    $('modal-group').hidden = !modal;
+    $('joints-caption').textContent = modal ? "The scene's tuned joints: k and c solved for the mode"
+      : "The scene's tuned joints: each takes this tuning on the effective mass its bodies give it";
+    if (modal) showModalSummary($('summary'), doc.modal_tuning, chosenVerdict(tune));
     lanes = box2dPreset(state) ? oscillatorLanes(doc.probes) : [];
     $('lanes-figure').hidden = lanes.length === 0;
     note.textContent = doc.stages ? `Stages run: ${doc.stages.join(', ')}` : '';
@@ -374,6 +381,7 @@ async function runSimulate(state, tune) {
   } catch (e) {
     if (!(e instanceof ApiError)) throw e;
     if (box2dPreset(state) && presetJoints === null) presetJoints = [];
+    $('modal-group').hidden = true;
     body.replaceChildren();
     table.hidden = e.unavailable;
     note.textContent = e.unavailable ? unavailable('Simulation') : `Simulation refused: ${designerMessage(e.message, e.field)}`;
@@ -476,6 +484,7 @@ async function loadPreset(name, adopt) {
   urlDefaults = DEFAULTS;
   $('preset-note').textContent = '';
   $('joints').querySelector('tbody').replaceChildren();
+  $('modes-panel')?.replaceChildren();
   if (name) {
     const { scene, note } = await tracked(fetchPresetScene(name));
     if ($('preset').value !== name) return;
@@ -493,17 +502,16 @@ async function loadPreset(name, adopt) {
   scheduleTune();
 }
 
-/// The preset's modes (modes.js); picking one makes the sliders tune it.
+/// The preset's modes (modes.js): radios of the `target` control; picking one makes the sliders tune it.
 async function loadModes(name) {
   const panel = $('modes-panel');
-  pickedMode = null;
   if (!panel) return;
   panel.replaceChildren();
   if (!presetScene?.bodies?.length || !hasRoute('POST', '/api/v1/modes')) return;
   try {
     const answer = await tracked(callJson('POST', 'api/v1/modes', { preset: name }));
     if ($('preset').value !== name) return;
-    showModes(panel, answer, pickedMode, (target) => { pickedMode = target; scheduleTune(); });
+    showModes(panel, answer, $('target').value);
   } catch (e) {
     if (!(e instanceof ApiError)) throw e;
     panel.textContent = e.message;

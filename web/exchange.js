@@ -1,7 +1,19 @@
 // Export and import of the page's tuning as a JSON file that `softtune simulate --request FILE` and
-// POST /api/v1/simulate take unchanged: {"preset": NAME, "tuning": {...}} for a preset, the one-body
-// scene the page simulates for a custom body. Importing such a file (or a tune request) sets the controls.
+// POST /api/v1/simulate take unchanged: {"preset": NAME, "tuning": {...}} for a preset as it stands, its
+// scene with the picked mode target (or without modal tuning) and the tuning when another mode was picked,
+// the one-body scene the page simulates for a custom body. Importing such a file (or a tune request) sets
+// the controls.
+import { sceneTarget, targetKey } from './modes.js';
 import { stateFromScene } from './state.js';
+
+// The controls of a preset request's `tuning` (the step and the designer fields), none it leaves out.
+function stateFromTuning(t, words) {
+  const state = stateFromScene({ world: { fps: t.fps, substeps: t.substeps }, joints: [t] }, words);
+  if (t.fps === undefined) delete state.fps;
+  if (t.substeps === undefined) delete state.substeps;
+  delete state.target;  // a tuning names no mode: the preset's own target stands
+  return state;
+}
 
 /// The file's name for a state: softtune-<preset or custom>.json.
 export function exportName(state) {
@@ -12,13 +24,11 @@ export function exportName(state) {
 /// Accepts a preset request with `tuning`, a scene (its world and first tuned item), or a tune request.
 export function stateFromDocument(doc, words) {
   if (!doc || typeof doc !== 'object' || Array.isArray(doc)) throw new Error('the file is not a JSON object');
-  if (typeof doc.preset === 'string') {
-    const t = doc.tuning ?? {};
-    const pseudo = { world: { fps: t.fps, substeps: t.substeps }, joints: [t] };
-    const state = stateFromScene(pseudo, words);
-    if (t.fps === undefined) delete state.fps;
-    if (t.substeps === undefined) delete state.substeps;
-    return { preset: doc.preset, ...state };
+  if (typeof doc.preset === 'string') return { preset: doc.preset, ...stateFromTuning(doc.tuning ?? {}, words) };
+  // A preset's scene exported with another mode picked: the preset by its scene's name, the pick from its
+  // modal tuning (none: each spring on its own mass).
+  if (doc.scene && doc.tuning && typeof doc.scene.name === 'string' && doc.scene.name) {
+    return { preset: doc.scene.name, ...stateFromTuning(doc.tuning, words), target: targetKey(sceneTarget(doc.scene)) };
   }
   const scene = doc.scene ?? doc;
   if (scene.world || scene.oscillators || scene.joints) return { preset: '', ...stateFromScene(scene, words) };

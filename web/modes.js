@@ -2,6 +2,8 @@
 // damping ratio at the scene's step and a small arrow drawing of its shape; picking one makes the sliders tune
 // that mode (the scene's modal_tuning target) instead of each spring on its own mass.
 const SVG = 'http://www.w3.org/2000/svg';
+/// The `target` control's value for "each spring on its own mass" (no modal tuning).
+export const SPRINGS = 'springs';
 const TUNING_KEYS = ['response_frames', 'basis_fps', 'frequency_hz', 'oscillation', 'damping_ratio', 'mode'];
 
 const fmtHz = (p) => (p ? `${p.frequency_hz.toFixed(3)} Hz, ζ ${p.damping_ratio.toFixed(3)}` : '—');
@@ -10,6 +12,34 @@ const fmtHz = (p) => (p ? `${p.frequency_hz.toFixed(3)} Hz, ζ ${p.damping_ratio
 export function modeTarget(mode) {
   const top = mode.components?.[0];
   return top ? { body: top.body, mode: top.motion } : null;
+}
+
+/// The `target` control's value for a pick: "body.motion" ("chassis.heave"), or SPRINGS for none.
+export function targetKey(target) {
+  return target ? `${target.body}.${target.mode}` : SPRINGS;
+}
+
+/// The pick a `target` value names (a body may have dots in its id: the motion follows the last one).
+export function parseTarget(key) {
+  const dot = key.lastIndexOf('.');
+  return key === SPRINGS || dot <= 0 ? null : { body: key.slice(0, dot), mode: key.slice(dot + 1) };
+}
+
+/// The mode target a scene states itself (its modal_tuning's first target), or null.
+export function sceneTarget(scene) {
+  const t = scene?.modal_tuning?.targets?.[0];
+  return t?.body && t?.mode ? { body: t.body, mode: t.mode } : null;
+}
+
+/// The scene as the `target` control asks for it: the scene's own modal tuning when the pick is the
+/// scene's own target; without modal_tuning for SPRINGS; else the sliders' tuning on the picked mode.
+export function targetedScene(scene, tuning, key) {
+  if (key === targetKey(sceneTarget(scene))) return scene;
+  const picked = parseTarget(key);
+  if (picked) return modalScene(scene, tuning, picked);
+  const s = structuredClone(scene);
+  delete s.modal_tuning;
+  return s;
 }
 
 /// The scene with the sliders' tuning on the picked mode: every designer-tuned joint in one group, solved so that
@@ -65,36 +95,43 @@ export function modeArrows(mode, doc = document) {
   return svg;
 }
 
-/// Fills `panel` with the modes of `answer` (the POST /api/v1/modes body): one row per mode that moves, a radio
-/// to pick the one the sliders tune (`onPick(target | null)`), `picked` the current pick.
-export function showModes(panel, answer, picked, onPick, doc = document) {
+/// Fills `panel` with the modes of `answer` (the POST /api/v1/modes body): one row per mode that moves, each a
+/// radio of the form's `target` control (state.js targetKey: "body.motion", or SPRINGS for each spring on its
+/// own mass), `pickedKey` the one checked. The form's change handler takes a pick like any other control.
+export function showModes(panel, answer, pickedKey, doc = document) {
   panel.replaceChildren();
   const title = doc.createElement('h3');
   title.textContent = `Modes at rest (t = ${answer.at_s.toFixed(2)} s${answer.settled ? '' : ', still moving'})`;
   panel.appendChild(title);
   const list = doc.createElement('ul');
   list.className = 'modes';
-  const choice = (label, target, checked) => {
+  const choice = (label, key) => {
     const li = doc.createElement('li');
     const input = doc.createElement('input');
     input.type = 'radio';
-    input.name = 'mode-pick';
-    input.checked = checked;
-    input.addEventListener('change', () => onPick(target));
+    input.name = 'target';
+    input.value = key;
+    input.checked = key === pickedKey;
     const text = doc.createElement('label');
     text.append(input, ` ${label}`);
     li.appendChild(text);
     list.appendChild(li);
     return li;
   };
-  choice('each spring on its own mass', null, !picked);
+  choice('each spring on its own mass', SPRINGS);
+  let listed = pickedKey === SPRINGS;
   for (const m of answer.modes ?? []) {
     if (m.free || m.unstable) continue;
     const target = modeTarget(m);
-    const li = choice(`${m.name}: ${fmtHz(m.discrete ?? m.continuous)}`, target,
-      Boolean(picked && target && picked.body === target.body && picked.mode === target.mode));
+    if (!target) continue;
+    const key = targetKey(target);
+    listed ||= key === pickedKey;
+    const li = choice(`${m.name}: ${fmtHz(m.discrete ?? m.continuous)}`, key);
     li.dataset.testid = 'mode';
     li.appendChild(modeArrows(m, doc));
   }
+  // A target named by the scene (or a link) whose body is not the largest mover of any mode stays pickable.
+  const picked = parseTarget(pickedKey);
+  if (!listed && picked) choice(`${picked.body} ${picked.mode} (the scene's target)`, pickedKey).dataset.testid = 'mode';
   panel.appendChild(list);
 }

@@ -142,22 +142,46 @@ export async function copyText(text) {
 }
 
 
+/// The verdict of the soft method the request's mode chose, at this step ('' when unknown).
+export function chosenVerdict(tune) {
+  return tune?.stability?.[tune.mode === 'exact' ? 'soft_exact' : 'soft']?.verdict ?? '';
+}
+
+function putSummary(root, testid, text, title) {
+  const el = root.querySelector(`[data-testid="${testid}"]`);
+  el.textContent = text;
+  if (title) el.title = title;
+}
+
 /// The summary bar beside the sliders: requested against achieved frequency and damping ratio, k, c, and
 /// the chosen soft method's verdict at this step; `what` names the joint the numbers describe.
 export function showSummary(root, tune, what) {
   const req = tune.requested ?? {}, got = tune.achieved ?? {};
-  const put = (testid, text, title) => {
-    const el = root.querySelector(`[data-testid="${testid}"]`);
-    el.textContent = text;
-    if (title) el.title = title;
-  };
+  const put = (testid, text, title) => putSummary(root, testid, text, title);
   put('summary-frequency', `${fmt(req.frequency_hz)} → ${fmt(got.frequency_hz)} Hz`, 'requested → achieved at this step');
   put('summary-damping', `${fmt(req.damping_ratio)} → ${fmt(got.damping_ratio)}`, 'requested → achieved damping ratio');
   put('summary-k', fmt(tune.k), tune.mode === 'exact' ? "k' (exact mode)" : 'stiffness');
   put('summary-c', fmt(tune.c), tune.mode === 'exact' ? "c' (exact mode)" : 'damping');
-  const method = tune.mode === 'exact' ? 'soft_exact' : 'soft';
-  const verdict = tune.stability?.[method]?.verdict ?? '';
+  const verdict = chosenVerdict(tune);
   const el = root.querySelector('[data-testid="summary-verdict"]');
   el.textContent = `${verdict}${what ? ` · ${what}` : ''}`;
   el.className = verdict ? `verdict-${verdict}` : '';
 }
+
+/// The summary bar of a preset tuned by its modes: the picked mode's requested against measured (in the
+/// Box2D run) frequency and damping ratio, and the first group's solved k and c, so that what stays in view
+/// is the motion the designer tunes rather than one spring on its own mass.
+export function showModalSummary(root, modal, verdict) {
+  const t = modal?.targets?.[0];
+  const g = modal?.groups?.[0];
+  if (!t) return;
+  const req = t.requested ?? {}, got = t.measured ?? {};
+  const put = (testid, text, title) => putSummary(root, testid, text, title);
+  put('summary-frequency', `${fmt(req.frequency_hz)} → ${fmt(got.frequency_hz)} Hz`, `${t.mode}: requested → measured in the simulation`);
+  put('summary-damping', `${fmt(req.damping_ratio)} → ${fmt(got.damping_ratio)}`, `${t.mode}: requested → measured damping ratio`);
+  put('summary-k', fmt(g?.stiffness), `each joint of ${g?.id ?? 'the group'}, solved for the mode`);
+  put('summary-c', fmt(g?.damping), `each joint of ${g?.id ?? 'the group'}, solved for the mode`);
+  const el = root.querySelector('[data-testid="summary-verdict"]');
+  el.textContent = `${verdict ?? ''}${verdict ? ' · ' : ''}${t.mode}`;
+}
+

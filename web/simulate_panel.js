@@ -65,3 +65,37 @@ export function showJoints(tbody, joints, picked) {
     return tr;
   }));
 }
+
+/// The cells of one modal target's row (a simulate answer's modal_tuning.targets[i]): the mode, what was
+/// asked, what the linear model predicts at the step, what the Box2D run measured at the target's probe,
+/// and the measured error (percent of the asked frequency; the damping ratio's difference).
+export function modalTargetCells(t) {
+  const pair = (p) => (p ? `${fmt(p.frequency_hz)} Hz, ζ ${fmt(p.damping_ratio)}` : '—');
+  const e = t.error;
+  const error = e ? `${formatPercent(e.frequency === null || e.frequency === undefined ? null : 100 * e.frequency)}, Δζ ${formatDifference(e.damping_ratio)}` : '—';
+  return [t.mode ?? '', pair(t.requested), pair(t.predicted), pair(t.measured), error];
+}
+
+const MODAL_ROWS = ['asked', 'predicted (linear model)', 'measured (simulation)', 'error (f %, Δζ)'];
+
+/// The modal tuning of a simulate answer in `table`: a column per target (narrow: one target fits the
+/// sliders' column), a row per figure of modalTargetCells; `note` names each group's solved k and c.
+/// Returns false (nothing shown) for an answer without modal tuning.
+export function showModalTargets(table, note, modal) {
+  const targets = modal?.targets ?? [];
+  const cells = targets.map(modalTargetCells);
+  const head = document.createElement('tr');
+  head.append(document.createElement('td'));
+  for (const c of cells) {
+    const th = document.createElement('th');
+    th.scope = 'col';
+    th.dataset.target = c[0];
+    th.textContent = c[0];
+    head.append(th);
+  }
+  table.tHead.replaceChildren(head);
+  table.tBodies[0].replaceChildren(...MODAL_ROWS.map((label, i) => row([label, ...cells.map((c) => c[i + 1])])));
+  note.textContent = (modal?.groups ?? []).map((g) => `${g.id} (${(g.joints ?? []).join(', ')}): k ${fmt(g.stiffness)}, c ${fmt(g.damping)}`)
+    .join('; ');
+  return targets.length > 0;
+}

@@ -2,6 +2,8 @@
 // query, so a link restores a tuning exactly. Only values that differ from the page's defaults are
 // written, which keeps shared links short. This module also turns the state into API requests.
 
+import { sceneTarget, targetedScene, targetKey } from './modes.js';
+
 /// {name: value} of every named control; radios give the checked value ('' when none), checkboxes '1'/''.
 export function readForm(form) {
   const state = {};
@@ -103,17 +105,26 @@ export function sceneTuning(state) {
 }
 
 /// The preset as the page tunes it: a request `softtune simulate --request` and POST /api/v1/simulate take.
-export function presetRequest(state) {
-  return { preset: state.preset, tuning: sceneTuning(state) };
+/// By name while the `target` control asks what the preset's own scene does; otherwise its scene (`scene`,
+/// once loaded) with the picked mode as the modal target, or without modal tuning (modes.js targetedScene).
+export function presetRequest(state, scene) {
+  const tuning = sceneTuning(state);
+  if (!scene || !state.target || state.target === targetKey(sceneTarget(scene))) return { preset: state.preset, tuning };
+  return { scene: targetedScene(scene, tuningFields(state), state.target), tuning };
 }
 
-/// Controls a preset scene sets: the step and the tuning of its first designer-tuned joint or oscillator
-/// (`words` as in fromQuery).
+/// Controls a preset scene sets: the step, the mode pick, and the tuning of its modal target or else of its
+/// first designer-tuned joint or oscillator (`words` as in fromQuery).
 export function stateFromScene(scene, words = {}) {
   const out = {};
   if (scene.world?.fps !== undefined) out.fps = String(scene.world.fps);
   out.substeps = String(scene.world?.substeps ?? 1);
-  const tuned = [...(scene.oscillators ?? []), ...(scene.joints ?? [])].find((j) => TUNING_KEYS.some((k) => k in j));
+  out.target = targetKey(sceneTarget(scene));
+  // A scene tuned by its modes: its target holds the designer's ask, its modal_tuning the soft mode (a
+  // target's own "mode" names its motion).
+  const target = scene.modal_tuning?.targets?.[0];
+  const tuned = target && TUNING_KEYS.some((k) => k in target) ? { ...target, mode: scene.modal_tuning.mode }
+    : [...(scene.oscillators ?? []), ...(scene.joints ?? [])].find((j) => TUNING_KEYS.some((k) => k in j));
   if (!tuned) return out;
   const basis = tuned.basis_fps ?? 60;
   out.basis = String(basis);
@@ -154,7 +165,7 @@ export function previewRequest(state, tune, scene) {
   const settings = { size: PREVIEW_SIZE, wait: false };
   if (state.preset && state.preset !== 'oscillator') {
     const duration = scene?.world?.duration_s ?? 2;
-    return { ...presetRequest(state), frames: previewFrames(duration, Math.min(PREVIEW_RATE, num(state.fps) || PREVIEW_RATE)), ...settings };
+    return { ...presetRequest(state, scene), frames: previewFrames(duration, Math.min(PREVIEW_RATE, num(state.fps) || PREVIEW_RATE)), ...settings };
   }
   const { constraint, ...fields } = tuneRequest(state);
   const duration = Math.max(1, tune.exact_motion?.duration_s ?? 1);

@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { stateFromDocument } from '../../web/exchange.js';
-import { presetRequest } from '../../web/state.js';
+import { presetRequest, stateFromScene } from '../../web/state.js';
 
 const WORDS = JSON.parse(readFileSync(new URL('../../server/http/openapi.json', import.meta.url))).components.schemas
   .TuneRequest.properties.oscillation['x-damping-ratio'];
@@ -26,4 +26,21 @@ test('a tune request imports as a custom body; a file without a tuning is refuse
   assert.equal(s.fps, '30');
   assert.throws(() => stateFromDocument({ hello: 1 }, WORDS), /no preset, scene or tuning/);
   assert.throws(() => stateFromDocument([1, 2], WORDS), /not a JSON object/);
+});
+
+test('a preset exported with another mode picked imports back to that preset and pick', () => {
+  const scene = JSON.parse(readFileSync(new URL('../../presets/vehicle.json', import.meta.url)));
+  const state = { ...stateFromScene(scene, WORDS), preset: 'vehicle', frames: '30' };
+  for (const target of ['springs', 'chassis.pitch']) {
+    const doc = presetRequest({ ...state, target }, scene);
+    assert.ok(doc.scene, target);  // not the preset as it stands: its scene travels with the pick
+    const back = stateFromDocument(doc, WORDS);
+    assert.equal(back.preset, 'vehicle', target);
+    assert.equal(back.target, target);
+    assert.equal(back.frames, '30', target);
+  }
+  // The preset as it stands travels by name, and its import leaves the pick to the preset's own target.
+  const own = stateFromDocument(presetRequest(state, scene), WORDS);
+  assert.equal(own.preset, 'vehicle');
+  assert.equal(own.target, undefined);
 });

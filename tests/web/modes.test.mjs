@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { modalScene, modeArrows, modeTarget } from '../../web/modes.js';
+import { SPRINGS, modalScene, modeArrows, modeTarget, parseTarget, sceneTarget, targetKey, targetedScene } from '../../web/modes.js';
 
 const softtune = process.env.SOFTTUNE_BIN ?? 'build/softtune';
 const presets = new URL('../../presets/', import.meta.url);
@@ -40,4 +40,19 @@ test('the drawing has an arrow for each translation and an arc for a rotation', 
   const arrows = created.filter((e) => (e.attrs.class ?? '').includes('mode-arrow'));
   assert.equal(arrows.length, 3);
   assert.equal(created.filter((e) => e.name === 'rect').length, 2);
+});
+
+test('a pick is a control value that names the body and its motion, and picks the scene to run', () => {
+  assert.equal(targetKey({ body: 'chassis', mode: 'heave' }), 'chassis.heave');
+  assert.equal(targetKey(null), SPRINGS);
+  assert.deepEqual(parseTarget('deck.plank_5.heave'), { body: 'deck.plank_5', mode: 'heave' });  // a dotted body id
+  assert.equal(parseTarget(SPRINGS), null);
+  assert.equal(parseTarget('heave'), null);
+  const scene = JSON.parse(readFileSync(new URL('vehicle.json', presets), 'utf8'));
+  assert.deepEqual(sceneTarget(scene), { body: 'chassis', mode: 'heave' });
+  assert.equal(targetedScene(scene, {}, 'chassis.heave'), scene);  // the scene's own target: as given
+  assert.equal(targetedScene(scene, {}, SPRINGS).modal_tuning, undefined);
+  assert.ok(scene.modal_tuning, 'the preset itself is left alone');
+  const pitch = targetedScene(scene, { response_frames: 30, oscillation: 'none' }, 'chassis.pitch').modal_tuning;
+  assert.deepEqual(pitch.targets, [{ response_frames: 30, oscillation: 'none', body: 'chassis', mode: 'pitch' }]);
 });

@@ -414,6 +414,55 @@ test('a preset previews its own scene with the page tuning, plays it in real tim
   assert.deepEqual(consoleErrors, [], 'no console errors');
 });
 
+test('a preset tuned by its modes starts on its own mode, and a pick reaches the numbers, the preview and the link', async (t) => {
+  const served = await routes();
+  if (!served.has('POST /api/v1/preview') || !served.has('POST /api/v1/modes')) {
+    t.skip('this server has no preview or modes routes');
+    return;
+  }
+  const page = await openPage(`${base}?preset=vehicle`, { width: 1440, height: 900 });
+  let shown = await previewShown(page);
+  await page.waitForFunction(() => document.querySelectorAll('input[name="target"][type="radio"]').length > 2, null, { timeout: 20000 });
+  // The vehicle's own target (its chassis heave) is the pick; the preset runs by name, as it stands.
+  assert.equal(await page.locator('input[name="target"]:checked').getAttribute('value'), 'chassis.heave');
+  assert.equal(shown.request.preset, 'vehicle');
+  // The summary in view and the modal table describe the heave the designer tunes, measured in Box2D.
+  const heave = (await api('POST', 'api/v1/simulate', { preset: 'vehicle', tuning: shown.request.tuning })).doc.modal_tuning;
+  await page.waitForFunction(() => !document.getElementById('modal-group').hidden, null, { timeout: 20000 });
+  assert.equal(await page.locator('#modal-targets thead th').getAttribute('data-target'), 'chassis heave');
+  const measured = heave.targets[0].measured.frequency_hz;
+  assert.equal(await page.getByTestId('summary-frequency').textContent(), `3 → ${Number(measured.toPrecision(6))} Hz`);
+  assert.match(await page.getByTestId('summary-verdict').textContent(), /chassis heave$/);
+  assert.match(await page.locator('#joint-note').textContent(), /The sliders tune the chassis heave/);
+
+  // Each spring on its own mass: the preview runs the scene without modal tuning, and the URL keeps the pick.
+  await page.locator('input[name="target"][value="springs"]').check();
+  await settled(page);
+  shown = await previewShown(page);
+  assert.equal(shown.request.preset, undefined);
+  assert.equal(shown.request.scene.name, 'vehicle');
+  assert.equal(shown.request.scene.modal_tuning, undefined);
+  assert.ok(await page.locator('#modal-group').isHidden());
+  assert.match(page.url(), /[?&]target=springs(&|$)/);
+  assert.doesNotMatch(page.url(), /mode-pick/);
+
+  // The pitch: solved to the sliders' request, and a reload of the link restores that pick and preview.
+  await page.locator('input[name="target"][value="chassis.pitch"]').check();
+  await settled(page);
+  shown = await previewShown(page);
+  assert.deepEqual(shown.request.scene.modal_tuning.targets.map((x) => [x.body, x.mode]), [['chassis', 'pitch']]);
+  await page.waitForFunction(() => document.querySelector('#modal-targets thead th')?.dataset.target === 'chassis pitch', null, { timeout: 20000 });
+  const link = page.url();
+  assert.match(link, /[?&]target=chassis\.pitch(&|$)/);
+  await page.close();
+  const reloaded = await openPage(link, { width: 1440, height: 900 });
+  const again = await previewShown(reloaded);
+  assert.deepEqual(again.request, shown.request);
+  await reloaded.waitForFunction(() => document.querySelector('input[name="target"]:checked')?.value === 'chassis.pitch', null, { timeout: 20000 });
+  await reloaded.close();
+  assert.deepEqual(consoleErrors, [], 'no console errors');
+});
+
 test('an empty or non-numeric field is named at the field and never reads "Up to date"', async () => {
   const page = await openPage(base);
   const sent = await page.evaluate(() => JSON.stringify(window.softtune.request));

@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { probeCells, probeUnit, tunedJoints } from '../../web/simulate_panel.js';
+import { modalTargetCells, probeCells, probeUnit, tunedJoints } from '../../web/simulate_panel.js';
 
 const softtune = process.env.SOFTTUNE_BIN ?? 'build/softtune';
 const presets = new URL('../../presets', import.meta.url).pathname;
@@ -33,4 +33,19 @@ test('a tuned preset lists its joints on their own effective masses with k = m o
   assert.equal(joints.length, 4);
   const omega = 2 * Math.PI * 2;  // 30 frames at 60 fps
   for (const j of joints) assert.ok(Math.abs(j.k - j.model_mass * omega * omega) < 1e-9 * j.k, `${j.id}: ${j.k}`);
+});
+
+test('the vehicle tuned by its heave: the row shows asked, predicted and measured, errors in % and Δζ', () => {
+  const out = simulate({ preset: 'vehicle' });
+  const t = out.modal_tuning.targets[0];
+  const cells = modalTargetCells(t);
+  assert.equal(cells[0], 'chassis heave');
+  assert.equal(cells[1], '3 Hz, ζ 0.5');  // the preset asks 20 frames at 60 fps, some oscillation
+  assert.match(cells[2], /^3 Hz, ζ 0\.5$/);  // exact mode: the linear model lands on the request at the step
+  // Measured in Box2D within the preset's own bar (3 %, 0.05), and the error column is that measurement's.
+  assert.ok(Math.abs(t.measured.frequency_hz / 3 - 1) < 0.03, cells[3]);
+  assert.ok(Math.abs(t.measured.damping_ratio - 0.5) < 0.05, cells[3]);
+  const pct = (100 * (t.measured.frequency_hz / 3 - 1)).toFixed(2);
+  assert.ok(cells[4].startsWith(`${Number(pct) > 0 ? '+' : ''}${pct} %, Δζ `), cells[4]);
+  assert.deepEqual(modalTargetCells({ mode: 'x', requested: { frequency_hz: 1, damping_ratio: 0 } }).slice(2), ['—', '—', '—']);
 });

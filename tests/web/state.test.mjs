@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { fromQuery, presetRequest, previewFrames, stateFromScene, toQuery, tuneRequest } from '../../web/state.js';
+import { fromQuery, presetRequest, previewFrames, previewRequest, stateFromScene, toQuery, tuneRequest } from '../../web/state.js';
 
 const softtune = process.env.SOFTTUNE_BIN ?? 'build/softtune';
 const presets = new URL('../../presets', import.meta.url).pathname;
@@ -20,7 +20,7 @@ const DEFAULTS = {
   preset: '', body: 'mass', mass: '1', ctype: 'linear', a_static: '1', a_mass: '1', a_inertia: '', a_x: '0', a_y: '0',
   a_angle: '0', b_static: '', b_mass: '2', b_inertia: '0.5', b_x: '1', b_y: '0', b_angle: '0', anchor_a_x: '0',
   anchor_a_y: '0', anchor_b_x: '1', anchor_b_y: '0.5', axis_x: '1', axis_y: '0', frames: '12', basis: '60', osc: 'some',
-  zeta: '0.5', fps: '60', substeps: '1', mode: 'standard', joint: '',
+  zeta: '0.5', fps: '60', substeps: '1', mode: 'standard', joint: '', target: '',
 };
 
 test('a query holds only what differs from the defaults and restores it', () => {
@@ -70,7 +70,7 @@ test('a preset seeds the controls from its first tuned item', () => {
       { id: 'b', effective_mass: 2, frequency_hz: 2, damping_ratio: 0.2, mode: 'exact' },
     ],
   };
-  assert.deepEqual(stateFromScene(scene, WORDS), { fps: '60', substeps: '1', basis: '60', frames: '30', osc: 'some', zeta: '0.5', mode: 'standard', body: 'mass', mass: '2' });
+  assert.deepEqual(stateFromScene(scene, WORDS), { fps: '60', substeps: '1', target: 'springs', basis: '60', frames: '30', osc: 'some', zeta: '0.5', mode: 'standard', body: 'mass', mass: '2' });
 });
 
 test('the page tunes a preset by name: `softtune simulate --request` gives its joints the page tuning', () => {
@@ -89,6 +89,38 @@ test('the page tunes a preset by name: `softtune simulate --request` gives its j
   const j = out.joints.find((x) => x.tuned);
   const t = tune({ fps: 120, substeps: 2, response_frames: 40, basis_fps: 60, mode: 'exact', oscillation: 'some', effective_mass: j.model_mass });
   assert.ok(Math.abs(j.stiffness - t.k) <= 1e-9 * t.k, `${j.stiffness} vs ${t.k}`);
+});
+
+test('the mode pick: the preset by name for its own target, without modal tuning for each spring, the picked mode solved', () => {
+  const scene = JSON.parse(readFileSync(`${presets}/vehicle.json`, 'utf8'));
+  const own = stateFromScene(scene, WORDS);
+  assert.equal(own.target, 'chassis.heave');  // the vehicle's own modal target is what the page starts from
+  // ... with that target's ask and the modal solve's mode (exact), not a spring's own fields.
+  assert.equal(own.mode, scene.modal_tuning.mode);
+  assert.equal(own.frames, String(scene.modal_tuning.targets[0].response_frames));
+  assert.equal(own.osc, scene.modal_tuning.targets[0].oscillation);
+  const state = { ...DEFAULTS, ...own, preset: 'vehicle', frames: '24', mode: 'exact' };
+  assert.deepEqual(presetRequest(state, scene), presetRequest(state, null));
+  assert.equal(presetRequest(state, scene).preset, 'vehicle');
+  // The preview asks the same scene as the simulation, whatever the pick.
+  for (const target of ['chassis.heave', 'springs', 'chassis.pitch']) {
+    const picked = { ...state, target };
+    const { frames, size, wait, ...asked } = previewRequest(picked, {}, scene);
+    assert.deepEqual(asked, presetRequest(picked, scene), target);
+  }
+  // By name: the heave lands on the sliders' 2.5 Hz (24 frames at 60 fps), exact at the step.
+  const heave = simulate(presetRequest(state, scene)).modal_tuning.targets[0];
+  assert.equal(heave.mode, 'chassis heave');
+  assert.ok(Math.abs(heave.predicted.frequency_hz - 2.5) < 1e-6, `${heave.predicted.frequency_hz}`);
+  // Each spring on its own mass: no modal solve, every spring asked the sliders' 2.5 Hz on its own mass.
+  const springs = simulate(presetRequest({ ...state, target: 'springs' }, scene));
+  assert.equal(springs.modal_tuning, undefined);
+  for (const j of springs.joints.filter((x) => x.tuned)) assert.equal(j.requested.frequency_hz, 2.5, j.id);
+  // Another mode: the pitch is solved to the sliders' request instead of the heave.
+  const pitch = simulate(presetRequest({ ...state, target: 'chassis.pitch' }, scene)).modal_tuning.targets[0];
+  assert.equal(pitch.mode, 'chassis pitch');
+  assert.ok(Math.abs(pitch.predicted.frequency_hz - 2.5) < 1e-6, `${pitch.predicted.frequency_hz}`);
+  assert.ok(Math.abs(pitch.predicted.damping_ratio - 0.5) < 1e-6, `${pitch.predicted.damping_ratio}`);
 });
 
 test('a preview covers its whole duration at up to the playback rate, within the frame cap', () => {
