@@ -107,7 +107,7 @@ Correction correct_response(const ResponseValues& asked, std::span<const Correct
     return out;
   }
   // Where the model itself cannot reach the bar with any step (J has lost a direction, or the request
-  // needs a negative damping ratio typed), more rounds will not help: said from a second recording on.
+  // needs a damping ratio below the floor), more rounds will not help: said from a second recording on.
   const double unlimited = std::numeric_limits<double>::infinity();
   const bool beyond =
       rounds.size() >= 2 && !inside_bar(trust_step(s.J, r[s.best], x[s.best], unlimited, lower).predicted);

@@ -127,6 +127,12 @@ BlackBoxRun black_box_rounds(const RealEngine& engine, std::size_t index, const 
     out.rounds.push_back({typed, {*id.joint.frequency_hz, *id.joint.damping_ratio}});
     out.last = correct_response(asked, out.rounds, lowest);
     if (out.last.verdict == CorrectionVerdict::met || out.last.verdict == CorrectionVerdict::stalled) break;
+    // Beyond reach and back at the best round: another recording of it would add nothing.
+    const ResponseValues& best = out.rounds[out.last.best_round].typed;
+    if (out.last.verdict == CorrectionVerdict::beyond_reach && out.last.next.frequency_hz == best.frequency_hz &&
+        out.last.next.damping_ratio == best.damping_ratio) {
+      break;
+    }
     typed = out.last.next;
   }
   return out;
