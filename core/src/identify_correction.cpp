@@ -60,11 +60,13 @@ ResponseValues response_of(const ResponseValues& asked, const Eigen::Vector2d& r
 }
 
 // A negative damping ratio is typed only once the engine has shown it damps by itself: a round typed with
-// (almost) none, at most the bar, still measured more than asked plus the bar. An explicit step (Bullet's
-// spring) adds no damping of its own, and a negative ratio typed into it grows instead of settling.
+// at most half the asked ratio (or the bar, asked none) still measured more than asked plus the bar. An
+// explicit step (Bullet's spring) adds no damping of its own, and a negative ratio typed into it grows
+// instead of settling; the first round, typed as asked, cannot tell the two apart.
 double damping_floor(const ResponseValues& asked, std::span<const CorrectionRound> rounds, double lowest) {
+  const double little = std::max(0.5 * asked.damping_ratio, kCorrectionDampingBar);
   for (const CorrectionRound& r : rounds) {
-    if (r.typed.damping_ratio <= kCorrectionDampingBar &&
+    if (r.typed.damping_ratio <= little &&
         r.measured.damping_ratio > asked.damping_ratio + kCorrectionDampingBar) {
       return std::min(0.0, lowest);
     }

@@ -79,9 +79,9 @@ inline constexpr double kCorrectionMinRadius = 0.25;
 double lowest_typed_damping_ratio(double frequency_hz, double step_s);
 
 /// The correction for `asked` from `rounds` (oldest first; at least one, every frequency > 0). It types a
-/// damping ratio below 0, down to `lowest_damping_ratio`, only once a round typed with at most the bar
-/// (0.02) still measured more than asked plus the bar: the engine damps by itself (an implicit or soft
-/// step). Pass 0 for an engine that refuses negative damping.
+/// damping ratio below 0, down to `lowest_damping_ratio`, only once a round typed with at most half the
+/// asked ratio (or 0.02) still measured more than asked plus 0.02: the engine damps by itself (an implicit
+/// or soft step). Pass 0 for an engine that refuses negative damping.
 Correction correct_response(const ResponseValues& asked, std::span<const CorrectionRound> rounds,
                             double lowest_damping_ratio = 0.0);
 
