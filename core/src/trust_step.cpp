@@ -32,7 +32,11 @@ Eigen::Vector2d bounded_step(const Eigen::Matrix2d& J, const Eigen::Vector2d& r,
   while (levenberg_marquardt(J, r, hi).norm() > radius) hi *= 4.0;
   for (int i = 0; i < 100 && hi / lo > 1.0 + 1e-12; ++i) {
     const double mid = std::sqrt(lo * hi);
-    (levenberg_marquardt(J, r, mid).norm() > radius ? lo : hi) = mid;
+    if (levenberg_marquardt(J, r, mid).norm() > radius) {
+      lo = mid;
+    } else {
+      hi = mid;
+    }
   }
   return levenberg_marquardt(J, r, hi);
 }
