@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "softtune/trust_step.h"
@@ -102,10 +103,17 @@ Correction correct_response(const ResponseValues& asked, std::span<const Correct
   out.method = rounds.size() < 2 ? CorrectionMethod::scaled : CorrectionMethod::secant;
   out.best_round = s.best;
   out.trust_radius = s.radius;
-  if (meets_bar(asked, best.measured)) {
+  // Any round within the bar ends the rounds, even where another is nearer in the Euclidean sense the
+  // steps use (1.1 % / 0 is nearer than 0.9 % / 0.019, and only the second meets the bar).
+  std::optional<std::size_t> met;
+  for (std::size_t i = 0; i < rounds.size(); ++i) {
+    if (meets_bar(asked, rounds[i].measured) && (!met || r[i].norm() < r[*met].norm())) met = i;
+  }
+  if (met) {
     out.verdict = CorrectionVerdict::met;
-    out.next = best.typed;
-    out.expected = best.measured;
+    out.best_round = *met;
+    out.next = rounds[*met].typed;
+    out.expected = rounds[*met].measured;
     return out;
   }
   // Where the model itself cannot reach the bar with any step (J has lost a direction, or the request

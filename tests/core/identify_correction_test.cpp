@@ -53,6 +53,16 @@ TEST(IdentifyCorrection, SecantConvergesOnAValueDependentError) {
   EXPECT_EQ(done.next.frequency_hz, rounds[done.best_round].typed.frequency_hz);
 }
 
+// A round within the bar ends the rounds even when another is nearer in the steps' Euclidean sense.
+TEST(IdentifyCorrection, AnyRoundWithinTheBarIsMet) {
+  const ResponseValues asked{5.0, 0.5};
+  const std::vector<CorrectionRound> rounds = {{{5.0, 0.5}, {5.0 * 0.991, 0.519}}, {{5.05, 0.5}, {5.0 * 1.011, 0.5}}};
+  const Correction c = correct_response(asked, rounds);
+  EXPECT_EQ(c.verdict, CorrectionVerdict::met);
+  EXPECT_EQ(c.best_round, 0u);
+  EXPECT_EQ(c.next.frequency_hz, 5.0);
+}
+
 TEST(IdentifyCorrection, DampingIsNeverNegative) {
   const ResponseValues asked{2.0, 0.0};
   const CorrectionRound round{asked, {2.0, 0.03}};  // numerical damping on a free oscillation

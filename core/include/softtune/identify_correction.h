@@ -58,7 +58,8 @@ struct Correction {
   CorrectionMethod method = CorrectionMethod::scaled;
   CorrectionVerdict verdict = CorrectionVerdict::converging;
   ResponseValues expected;     ///< what the model expects the engine to do with `next`
-  std::size_t best_round = 0;  ///< index into the rounds (oldest first) of the one nearest the request
+  std::size_t best_round = 0;  ///< index into the rounds (oldest first): the nearest within the bar, else the
+                               ///< nearest to the request
   double trust_radius = 0.0;   ///< the step's limit, in units of the bar (1 % frequency, 0.02 ratio)
 };
 
