@@ -39,6 +39,9 @@ export function overlayCurves(answer) {
 const num = (v, digits = 4) => (typeof v === 'number' ? Number(v.toPrecision(digits)).toString() : '-');
 const pct = (v) => (typeof v === 'number' ? `${v >= 0 ? '+' : ''}${(100 * v).toFixed(1)} %` : '-');
 
+// Where the correction's rounds stand, when it is more than "record again" (docs/identify.md, the verdicts).
+const stance = (verdict) => (verdict && verdict !== 'converging' ? `: ${verdict.replace('_', ' ')}` : '');
+
 /// The engine-table row's texts: what the recording did, against the request, and what to type instead.
 export function identifiedRow(answer, engine) {
   const verdicts = (answer.verdicts ?? []).map((v) => v.code);
@@ -54,7 +57,7 @@ export function identifiedRow(answer, engine) {
     did,
     quality: verdicts.length ? verdicts.join(', ') : 'ok',
     instead,
-    method: answer.exact ? "the engine model's exact" : next ? `${answer.correction.method} correction` : 'no request to correct towards',
+    method: answer.exact ? "the engine model's exact" : next ? `${answer.correction.method} correction${stance(answer.correction.verdict)}` : 'no request to correct towards',
   };
 }
 

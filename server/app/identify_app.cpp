@@ -58,7 +58,10 @@ nlohmann::json run_identify(const nlohmann::json& request) {
     if (const auto measured = measured_response(o.identification)) {
       rounds.push_back({*o.typed, *measured});
       o.rounds = rounds.size();
-      o.correction = correct_response(*o.asked, rounds);
+      // The floor for a negative typed ratio uses the engine's step: the interval the poles were fitted per.
+      const double step = o.identification.fit_interval_s > 0.0 ? o.identification.fit_interval_s : o.tuned->h;
+      const double lowest = q.negative_damping ? lowest_typed_damping_ratio(o.asked->frequency_hz, step) : 0.0;
+      o.correction = correct_response(*o.asked, rounds, lowest);
       if (o.model) {
         if (const auto next = retargeted(*q.tune, o.correction->next)) {
           const TuneResult next_tuned = tune(*next);

@@ -23,6 +23,7 @@ constexpr const char* kIdentifyHelp = R"(softtune identify: what an engine did i
   --typed-k K --typed-c C                   or the stiffness and damping typed
   --previous-csv FILE --previous-frequency HZ --previous-damping Z
                              an earlier recording and what was typed for it (the correction then iterates)
+  --no-negative-damping      the engine refuses a negative damping: the correction never types one
  tune flags (the request the engine was tuned with; needed for the error and the correction):
 )";
 constexpr const char* kIdentifyHelpTail = R"(
@@ -66,7 +67,7 @@ int run_identify(const Args& args) {
     std::vector<std::string> with_value = tune_flag_names();
     with_value.emplace_back("request");
     for (const char* f : kOwnFlags) with_value.emplace_back(f);
-    const Flags flags = parse_flags(args, with_value, {"help"});
+    const Flags flags = parse_flags(args, with_value, {"help", "no-negative-damping"});
     if (flags.has("help")) {
       std::cout << kIdentifyHelp << kTuneFlagsHelp << kIdentifyHelpTail;
       return kExitOk;
@@ -78,10 +79,12 @@ int run_identify(const Args& args) {
       }
       Flags tune_only = flags;
       for (const char* f : kOwnFlags) tune_only.values.erase(f);
+      tune_only.values.erase("no-negative-damping");
       nlohmann::json request = {{"csv", read_text(*flags.get("csv"), "csv")}};
       const nlohmann::json tune = tune_fields_from_flags(tune_only);
       if (!tune.empty()) request["request"] = tune;
       if (auto e = flags.get("engine")) request["engine"] = *e;
+      if (flags.has("no-negative-damping")) request["negative_damping"] = false;
       const nlohmann::json typed = typed_from(flags, "typed-frequency", "typed-damping", "typed-k", "typed-c");
       if (!typed.empty()) request["typed"] = typed;
       if (auto p = flags.get("previous-csv")) {

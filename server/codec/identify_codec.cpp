@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <numbers>
 
+#include "codec/correction_codec.h"
 #include "codec/json_reader.h"
 #include "codec/json_writer.h"
 #include "codec/problem.h"
@@ -57,11 +57,15 @@ NamedRecording read_recording(ObjectReader& r) {
   return out;
 }
 
-ResponseValues read_response(ObjectReader r) {
+// A measured ratio is >= 0; a typed one may be negative, down to -1 (a correction for an engine that damps
+// by itself types one: lowest_typed_damping_ratio).
+ResponseValues read_response(ObjectReader r, double lowest_ratio = 0.0) {
   const auto f = r.number("frequency_hz");
   const auto z = r.number("damping_ratio");
   if (!f || !(*f > 0.0 && *f <= 1e4)) throw invalid_field(r.field("frequency_hz"), "must be a number in (0, 10000] Hz");
-  if (!z || !(*z >= 0.0 && *z <= 100.0)) throw invalid_field(r.field("damping_ratio"), "must be a number in [0, 100]");
+  if (!z || !(*z >= lowest_ratio && *z <= 100.0)) {
+    throw invalid_field(r.field("damping_ratio"), lowest_ratio < 0.0 ? "must be a number in [-1, 100]" : "must be a number in [0, 100]");
+  }
   r.finish();
   return {*f, *z};
 }
@@ -72,12 +76,12 @@ TypedValues read_typed(ObjectReader r) {
     const auto k = r.number("k");
     const auto c = r.number("c");
     if (!k || !(*k > 0.0 && *k <= 1e15)) throw invalid_field(r.field("k"), "must be a stiffness in (0, 1e15] N/m");
-    if (!c || !(*c >= 0.0 && *c <= 1e15)) throw invalid_field(r.field("c"), "must be a damping in [0, 1e15] N s/m");
+    if (!c || !(std::abs(*c) <= 1e15)) throw invalid_field(r.field("c"), "must be a damping in [-1e15, 1e15] N s/m");
     r.finish();
     out.spring = SpringConstants{*k, *c};
     return out;
   }
-  out.response = read_response(std::move(r));
+  out.response = read_response(std::move(r), kIdentifyLowestTypedRatio);
   return out;
 }
 
@@ -126,12 +130,6 @@ json plot_json(const NamedRecording& rec, const Identification& id) {
           {"fit_time_s", strided(fit_time)}, {"fitted", std::move(fitted)}};
 }
 
-json response_json(const ResponseValues& v, double mass) {
-  const SpringConstants s = spring_constants(mass, 2.0 * std::numbers::pi * v.frequency_hz, v.damping_ratio);
-  return {{"frequency_hz", number_or_null(v.frequency_hz)}, {"damping_ratio", number_or_null(v.damping_ratio)},
-          {"k", number_or_null(s.stiffness)}, {"c", number_or_null(s.damping)}};
-}
-
 bool valid_engine_name(const std::string& s) {
   if (s.empty() || s.size() > kIdentifyMaxEngineName) return false;
   return std::all_of(s.begin(), s.end(), [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.'; });
@@ -173,6 +171,10 @@ IdentifyRequest decode_identify_request(const json& doc) {
     t.finish();
   }
   if (auto t = r.object("typed")) q.typed = read_typed(std::move(*t));
+  if (const json* b = r.raw("negative_damping")) {
+    if (!b->is_boolean()) throw invalid_field(r.field("negative_damping"), "must be true or false (whether the engine takes a negative damping)");
+    q.negative_damping = b->get<bool>();
+  }
   if (const json* prev = r.raw("previous")) {
     if (!prev->is_array()) throw invalid_field(r.field("previous"), "must be an array of earlier rounds, oldest first");
     if (prev->size() > kIdentifyMaxPrevious) throw invalid_field(r.field("previous"), "must hold at most 4 earlier rounds");
@@ -209,6 +211,8 @@ json identify_request_from_csv(std::string body, const std::multimap<std::string
     const json v = ec == std::errc() && ptr == value.data() + value.size() ? json(number) : json(value);
     if (key == "engine") {
       doc["engine"] = value;
+    } else if (key == "negative_damping") {
+      doc["negative_damping"] = value == "true" ? json(true) : value == "false" ? json(false) : json(value);
     } else if (key.rfind("typed_", 0) == 0) {
       typed[key.substr(6)] = v;
     } else {
@@ -252,17 +256,9 @@ json encode_identify_result(const IdentifyRequest& q, const IdentifyOutcome& o) 
   out["error"] = o.asked && measured ? json{{"frequency", number_or_null(*id.joint.frequency_hz / o.asked->frequency_hz - 1.0)},
                                             {"damping_ratio", number_or_null(*id.joint.damping_ratio - o.asked->damping_ratio)}}
                                      : json();
-  if (o.correction && o.typed) {
-    json c = {{"method", o.correction->method == CorrectionMethod::secant ? "secant" : "scaled"},
-              {"rounds", o.rounds},
-              {"typed", response_json(*o.typed, o.effective_mass)},
-              {"next", response_json(o.correction->next, o.effective_mass)},
-              {"parameters", o.next_report ? engine_values_json(o.next_report->parameters) : json()},
-              {"parameters_predicted", o.next_report ? engine_prediction_json(o.next_report->predicted) : json()}};
-    out["correction"] = std::move(c);
-  } else {
-    out["correction"] = json();
-  }
+  out["correction"] = o.correction && o.typed
+                          ? correction_json(*o.correction, *o.typed, o.rounds, o.effective_mass, o.next_report)
+                          : json();
   const engines::EngineReport* report = nullptr;
   if (o.model && o.tuned) {
     const auto models = engines::engine_models();

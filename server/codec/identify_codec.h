@@ -18,6 +18,8 @@ namespace softtune::codec {
 
 /// Most earlier rounds (`previous`) a request may carry.
 inline constexpr std::size_t kIdentifyMaxPrevious = 4;
+/// Lowest typed damping ratio a request may carry (a correction types negative ones: identify_correction.h).
+inline constexpr double kIdentifyLowestTypedRatio = -1.0;
 /// Longest engine name (bytes).
 inline constexpr std::size_t kIdentifyMaxEngineName = 64;
 /// Most samples per probe the answer's `plot` carries (longer recordings are strided).
@@ -43,6 +45,7 @@ struct IdentifyRequest {
   std::optional<std::string> engine;   ///< a modelled engine's name (engine_models()) or any other
   std::optional<TypedValues> typed;    ///< default: the request's frequency and damping ratio
   std::vector<PreviousRound> previous;  ///< oldest first
+  bool negative_damping = true;  ///< whether the engine takes a negative damping (a correction may type one)
 };
 
 IdentifyRequest decode_identify_request(const nlohmann::json& doc);

@@ -274,10 +274,13 @@ std::vector<LimitRow> request_rows() {
        "2 to " + figure(kIdentifyMaxSamples) + " rows, 1 to " + figure(kIdentifyMaxProbes) + " probe columns, at most " +
            figure(kIdentifyMaxCells) + " values; CSV at most " + bytes(codec::kCsvMaxBytes) + ", column names of 1 to " +
            figure(codec::kCsvMaxNameBytes) + " bytes; at most " + figure(codec::kIdentifyMaxPrevious) +
-           " `previous` rounds; `engine` 1 to " + figure(codec::kIdentifyMaxEngineName) + " of `A-Za-z0-9_.-`",
+           " `previous` rounds; `engine` 1 to " + figure(codec::kIdentifyMaxEngineName) +
+           " of `A-Za-z0-9_.-`; a typed damping ratio from " + figure(codec::kIdentifyLowestTypedRatio) +
+           " (a correction types one down to -omega h / 4)",
        "`core/include/softtune/identify.h` `kIdentifyMaxSamples`, `kIdentifyMaxProbes`, `kIdentifyMaxCells`; "
        "`server/codec/csv_recording.h` `kCsvMaxBytes`, `kCsvMaxNameBytes`; `server/codec/identify_codec.h` "
-       "`kIdentifyMaxPrevious`, `kIdentifyMaxEngineName`",
+       "`kIdentifyMaxPrevious`, `kIdentifyMaxEngineName`, `kIdentifyLowestTypedRatio`; "
+       "`core/include/softtune/identify_correction.h` `lowest_typed_damping_ratio`",
        "422 naming the row and column (`csv.rows.N.x`, `probes.x.N`); the fit runs at most " +
            figure(kIdentifyMaxIterations) + " Levenberg-Marquardt steps per window; `plot` strided to at most " +
            figure(codec::kIdentifyMaxPlotSamples) + " samples per probe"},

@@ -74,6 +74,33 @@ TEST(IdentifyApp, SecondRecordingIteratesBySecant) {
   EXPECT_EQ(answer["correction"]["rounds"], 2);
 }
 
+// A recording within 1 % / 0.02 of the request: the rounds are met, and next keeps what was typed.
+TEST(IdentifyApp, CorrectionSaysWhenTheRequestIsMet) {
+  const json answer = run_identify({{"csv", oscillator_csv(5.03, 0.51, 240)},
+                                    {"request", {{"frequency_hz", 5}, {"damping_ratio", 0.5}, {"effective_mass", 2}}}});
+  const json& c = answer["correction"];
+  EXPECT_EQ(c["verdict"], "met");
+  EXPECT_EQ(c["best_round"], 0);
+  EXPECT_DOUBLE_EQ(c["next"]["frequency_hz"].get<double>(), 5.0);
+  EXPECT_NEAR(c["expected"]["frequency_hz"].get<double>(), 5.03, 1e-3);
+  EXPECT_FALSE(c["message"].get<std::string>().empty());
+}
+
+// Typed with no damping, the engine still damped 0.45 where 0.3 was asked (an implicit step's own damping):
+// the correction types a negative ratio, down to -omega h / 4 at the recording's 60 Hz, unless the engine
+// is said not to take one.
+TEST(IdentifyApp, NegativeDampingOnlyWhereTheEngineTakesIt) {
+  json request = {{"csv", oscillator_csv(8.0, 0.45, 240)},
+                  {"request", {{"frequency_hz", 8}, {"damping_ratio", 0.3}, {"effective_mass", 2}}},
+                  {"typed", {{"frequency_hz", 8}, {"damping_ratio", 0}}}};
+  const json allowed = run_identify(request)["correction"];
+  EXPECT_LT(allowed["next"]["damping_ratio"].get<double>(), 0.0);
+  EXPECT_GE(allowed["next"]["damping_ratio"].get<double>(), -0.25 * 2.0 * std::numbers::pi * 8.0 / 60.0 - 1e-9);
+  EXPECT_LT(allowed["next"]["c"].get<double>(), 0.0);
+  request["negative_damping"] = false;
+  EXPECT_EQ(run_identify(request)["correction"]["next"]["damping_ratio"].get<double>(), 0.0);
+}
+
 TEST(IdentifyApp, BadSeriesNameRowAndColumn) {
   EXPECT_EQ(identify_problem({{"csv", "time,x\n0,1\n0.1,abc\n"}}).substr(0, 21), "422 csv.rows.1.x: lin");
   EXPECT_EQ(identify_problem({{"csv", "time,x\n0,1\n0.1,2,3\n"}}).substr(0, 20), "422 csv.rows.1: line");

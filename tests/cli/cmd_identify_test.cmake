@@ -16,6 +16,23 @@ if(next LESS 5.8139 OR next GREATER 5.8140)
   message(FATAL_ERROR "correction ${next} Hz, wanted 5.81395")
 endif()
 
+# The correction's verdict; and 4.3 Hz / 0.61 where 5 Hz / 0.2 was asked, typed with no damping: the engine
+# damps by itself, so the correction types a negative ratio unless the engine refuses one.
+string(JSON stance GET "${out}" correction verdict)
+if(NOT stance STREQUAL "converging")
+  message(FATAL_ERROR "correction verdict ${stance}, wanted converging")
+endif()
+expect_run(0 identify --csv ${DATA}/recording_4p3hz.csv --frequency 5 --damping-ratio 0.2 --mass 2 --typed-frequency 5 --typed-damping 0)
+string(JSON z GET "${out}" correction next damping_ratio)
+if(NOT z LESS 0)
+  message(FATAL_ERROR "next damping ratio ${z}, wanted a negative one")
+endif()
+expect_run(0 identify --csv ${DATA}/recording_4p3hz.csv --frequency 5 --damping-ratio 0.2 --mass 2 --typed-frequency 5 --typed-damping 0 --no-negative-damping)
+string(JSON z GET "${out}" correction next damping_ratio)
+if(NOT z EQUAL 0)
+  message(FATAL_ERROR "next damping ratio ${z} with --no-negative-damping, wanted 0")
+endif()
+
 execute_process(COMMAND ${SOFTTUNE} identify --csv - INPUT_FILE ${DATA}/recording_4p3hz.csv RESULT_VARIABLE code OUTPUT_VARIABLE out)
 string(JSON f GET "${out}" frequency_hz)
 if(NOT code EQUAL 0 OR f LESS 4.29999 OR f GREATER 4.30001)

@@ -53,6 +53,28 @@ TEST(IdentifyCodec, RefusesNamingTheField) {
   EXPECT_EQ(refusal(bad), "422 engine");
 }
 
+// A correction may type a negative damping ratio (or c), so typed values take one back, down to -1; a
+// measured ratio stays >= 0; negative_damping is a boolean.
+TEST(IdentifyCodec, TypedRatioMayBeNegative) {
+  json doc = kSeries;
+  doc["typed"] = {{"frequency_hz", 8}, {"damping_ratio", -0.1}};
+  doc["negative_damping"] = false;
+  const IdentifyRequest q = decode_identify_request(doc);
+  EXPECT_EQ(q.typed->response->damping_ratio, -0.1);
+  EXPECT_FALSE(q.negative_damping);
+  EXPECT_TRUE(decode_identify_request(kSeries).negative_damping);
+  json bad = kSeries;
+  bad["typed"] = {{"frequency_hz", 8}, {"damping_ratio", -1.5}};
+  EXPECT_EQ(refusal(bad), "422 typed.damping_ratio");
+  bad = kSeries;
+  bad["negative_damping"] = "no";
+  EXPECT_EQ(refusal(bad), "422 negative_damping");
+  bad = kSeries;
+  bad["request"] = {{"frequency_hz", 5}, {"damping_ratio", 0.5}, {"effective_mass", 2}};
+  bad["previous"] = json::array({{{"measured", {{"frequency_hz", 4}, {"damping_ratio", -0.1}}}, {"typed", {{"frequency_hz", 5}, {"damping_ratio", 0.5}}}}});
+  EXPECT_EQ(refusal(bad), "422 previous.0.measured.damping_ratio");
+}
+
 TEST(IdentifyCodec, CsvQueryBecomesTheRequest) {
   const json doc = identify_request_from_csv("t,x\n", {{"engine", "unity"}, {"frequency_hz", "5"}, {"oscillation", "some"},
                                                        {"typed_frequency_hz", "6"}});
@@ -60,6 +82,7 @@ TEST(IdentifyCodec, CsvQueryBecomesTheRequest) {
   EXPECT_EQ(doc["request"]["frequency_hz"], 5.0);
   EXPECT_EQ(doc["request"]["oscillation"], "some");
   EXPECT_EQ(doc["typed"]["frequency_hz"], 6.0);
+  EXPECT_EQ(identify_request_from_csv("t,x\n", {{"negative_damping", "false"}})["negative_damping"], false);
 }
 
 }  // namespace

@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+
 #include "codec/problem.h"
 #include "http/routes.h"
+#include "openapi_conformance.h"
 
 namespace softtune::http {
 namespace {
@@ -44,6 +48,31 @@ TEST(IdentifyRoutes, CsvAndJsonBodies) {
     EXPECT_EQ(p.status, 422);
     EXPECT_EQ(p.field, "engine");
   }
+}
+
+// A correction's answer (typed with no damping, so next is a negative ratio, and an earlier round) conforms
+// to the documented 200, with the correction's verdict and its fields.
+TEST(IdentifyRoutes, CorrectionAnswerConformsToTheDocument) {
+  Service service({}, service_routes());
+  std::string csv = "t,x\n";
+  for (int n = 0; n < 240; ++n) {
+    const double t = n / 60.0, w = 2.0 * 3.141592653589793 * 4.3, zeta = 0.61;
+    char row[64];
+    std::snprintf(row, sizeof row, "%.6f,%.9f\n", t, 0.01 * std::exp(-zeta * w * t) * std::cos(w * std::sqrt(1 - zeta * zeta) * t));
+    csv += row;
+  }
+  nlohmann::json doc = {{"csv", csv},
+                        {"request", {{"frequency_hz", 5}, {"damping_ratio", 0.2}, {"effective_mass", 2}}},
+                        {"typed", {{"frequency_hz", 5.2}, {"damping_ratio", 0.01}}},
+                        {"previous", nlohmann::json::array({{{"measured", {{"frequency_hz", 4.2}, {"damping_ratio", 0.63}}},
+                                                             {"typed", {{"frequency_hz", 5}, {"damping_ratio", 0.2}}}}})}};
+  const HttpResponse r = identify(post("application/json", doc.dump()), service);
+  ASSERT_EQ(r.status, 200);
+  const nlohmann::json answer = nlohmann::json::parse(r.body);
+  EXPECT_EQ(testing::conformance_error(std::string(kIdentifyPath), "post", 200, "application/json", answer), "");
+  EXPECT_EQ(answer["correction"]["method"], "secant");
+  EXPECT_TRUE(answer["correction"]["verdict"].is_string());
+  EXPECT_LT(answer["correction"]["next"]["damping_ratio"].get<double>(), 0.0);
 }
 
 }  // namespace

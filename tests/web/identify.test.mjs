@@ -40,6 +40,9 @@ test('the row says what the engine did and what to type instead', () => {
   assert.equal(row.quality, 'ok');
   assert.deepEqual(row.instead, ['frequency 5.814 Hz, damping ratio 0.39', 'k = 2668.9, c = 57']);
   assert.equal(row.method, 'scaled correction');
+  const unreachable = identifiedRow({ ...answer, correction: { ...answer.correction, method: 'secant', verdict: 'beyond_reach' } }, 'bullet');
+  assert.equal(unreachable.method, 'secant correction: beyond reach');
+  assert.equal(identifiedRow({ ...answer, correction: { ...answer.correction, verdict: 'converging' } }, '').method, 'scaled correction');
   const modelled = identifiedRow({ ...answer, exact: { 'b2DistanceJointDef::stiffness': 2535.585 }, verdicts: [{ code: 'too_noisy' }] }, 'box2d_v2_4');
   assert.deepEqual(modelled.instead, ['b2DistanceJointDef::stiffness = 2535.59']);
   assert.equal(modelled.quality, 'too_noisy');

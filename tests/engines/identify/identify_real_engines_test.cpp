@@ -1,13 +1,15 @@
 // Recordings taken from the real engines (Box2D 2.4.1, ODE, Bullet, MuJoCo, linked in process): each run
 // with the engine's plain export is identified and held against the response fit of the same run (within
-// 0.5 % frequency, 0.01 damping ratio), then corrected once and run again, which must meet the request
-// within 1 % / 0.02 -- with the model's `exact`, and with the black-box correction (correct_response, as for
-// an engine softtune does not model: the measured ratio scales what was typed, re-exported in the engine's
-// fields). Prints the table of identified against measured and requested values.
+// 0.5 % frequency, 0.01 damping ratio); the model's `exact` typed into the engine must meet the request
+// within 1 % / 0.02 at once. The black-box correction (correct_response, as for an engine softtune does not
+// model: what was typed, re-exported in the engine's plain fields, recorded again) must end `met` within
+// five recordings where the plain export can reach the request, and in a verdict everywhere. Prints the
+// table of identified against measured and requested values, and every round.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 #include <vector>
 
 #include "softtune/engines/verify.h"
@@ -21,7 +23,6 @@ namespace {
 
 constexpr double kSameRunFrequency = 0.005, kSameRunDamping = 0.01;
 constexpr double kCorrectedFrequency = 0.01, kCorrectedDamping = 0.02;
-constexpr int kRounds = 3;
 
 struct Case {
   double frequency_hz, damping_ratio;
@@ -55,8 +56,8 @@ Identification identify_run(const RunTrajectory& x, double dt) {
 }
 
 TEST(IdentifyRealEngines, MatchesTheFitAndOneCorrectionMeetsTheRequest) {
-  std::printf("  %-11s %-9s | %-17s | %-17s | %-17s | %-17s | %-17s | %-17s\n", "engine", "asked", "fit of the run",
-              "identified", "after exact", "black box 1", "black box 2", "black box 3");
+  std::printf("  %-11s %-9s | %-17s | %-17s | %-17s\n", "engine", "asked", "fit of the run", "identified",
+              "after exact");
   double worst_f = 0, worst_z = 0, worst_exact_f = 0, worst_exact_z = 0;
   for (const RealEngine* engine : real_engines()) {
     const std::size_t index = model_index(engine->name);
@@ -92,33 +93,95 @@ TEST(IdentifyRealEngines, MatchesTheFitAndOneCorrectionMeetsTheRequest) {
         worst_exact_z = std::max(worst_exact_z, std::abs(exact_z - c.damping_ratio));
       }
 
-      // The black-box correction, as for an engine softtune does not model: what was typed (first the
-      // request) corrected by what was identified, re-exported in the engine's fields, recorded again.
-      const ResponseValues asked{c.frequency_hz, c.damping_ratio};
-      std::vector<CorrectionRound> rounds = {{asked, {*id.joint.frequency_hz, *id.joint.damping_ratio}}};
-      double after_f[kRounds] = {}, after_z[kRounds] = {};
-      for (int i = 0; i < kRounds; ++i) {
-        const ResponseValues next = correct_response(asked, rounds).next;
-        const TuneRequest q2 = request_for(next.frequency_hz, next.damping_ratio);
-        const TuneResult tuned2 = tune(q2);
-        const Identification after =
-            identify_run(run_report(*engine, tuned2.engine_reports[index].parameters, q2, tuned2, index), tuned2.h);
-        after_f[i] = after.joint.frequency_hz.value_or(NAN), after_z[i] = after.joint.damping_ratio.value_or(NAN);
-        rounds.push_back({next, {after_f[i], after_z[i]}});
-      }
-      // A black box that starts within 25 % of the request at f/fps <= 1/12 reaches it in three recordings.
-      if (c.frequency_hz <= 5.0 && std::abs(*id.joint.frequency_hz / c.frequency_hz - 1.0) < 0.25) {
-        EXPECT_LT(std::abs(after_f[kRounds - 1] / c.frequency_hz - 1.0), kCorrectedFrequency) << engine->name;
-        EXPECT_LT(std::abs(after_z[kRounds - 1] - c.damping_ratio), kCorrectedDamping) << engine->name;
-      }
-      std::printf("  %-11.*s %4.1f/%.2f | %7.4f Hz %.4f | %7.4f Hz %.4f | %7.4f Hz %.4f | %7.4f Hz %.4f | %7.4f Hz %.4f | %7.4f Hz %.4f\n",
+      std::printf("  %-11.*s %4.1f/%.2f | %7.4f Hz %.4f | %7.4f Hz %.4f | %7.4f Hz %.4f\n",
                   static_cast<int>(engine->name.size()), engine->name.data(), c.frequency_hz, c.damping_ratio,
                   *fit.frequency_hz, *fit.damping_ratio, *id.joint.frequency_hz, *id.joint.damping_ratio, exact_f,
-                  exact_z, after_f[0], after_z[0], after_f[1], after_z[1], after_f[2], after_z[2]);
+                  exact_z);
     }
   }
   std::printf("  worst: identified vs fit %.3g %% / %.3g; after exact %.3g %% / %.3g\n", 100 * worst_f, worst_z,
               100 * worst_exact_f, worst_exact_z);
+}
+
+// The black-box rounds, as for an engine softtune does not model: the request typed first, then each
+// recording typed with correct_response of every recording before it (re-exported in the engine's plain
+// fields), at most kBlackBoxRecordings (one recording and kIdentifyMaxPrevious = 4 earlier ones, what one
+// identify request carries). Every case must end in a verdict -- `met`, or `beyond_reach` / `stalled` --
+// never `converging` at the last recording; the cases the engine's plain export can reach must be met.
+constexpr std::size_t kBlackBoxRecordings = 5;
+
+struct BlackBoxRun {
+  std::vector<CorrectionRound> rounds;
+  Correction last;  // the correction of every recording
+};
+
+BlackBoxRun black_box_rounds(const RealEngine& engine, std::size_t index, const ResponseValues& asked) {
+  BlackBoxRun out;
+  const double lowest = lowest_typed_damping_ratio(asked.frequency_hz, tune(request_for(asked.frequency_hz, asked.damping_ratio)).h);
+  ResponseValues typed = asked;
+  for (std::size_t i = 0; i < kBlackBoxRecordings; ++i) {
+    const TuneRequest q = request_for(typed.frequency_hz, typed.damping_ratio);
+    const TuneResult tuned = tune(q);
+    const Identification id =
+        identify_run(run_report(engine, tuned.engine_reports[index].parameters, q, tuned, index), tuned.h);
+    if (!id.joint.frequency_hz || !id.joint.damping_ratio) break;
+    out.rounds.push_back({typed, {*id.joint.frequency_hz, *id.joint.damping_ratio}});
+    out.last = correct_response(asked, out.rounds, lowest);
+    if (out.last.verdict == CorrectionVerdict::met || out.last.verdict == CorrectionVerdict::stalled) break;
+    // Beyond reach and back at the best round: another recording of it would add nothing.
+    const ResponseValues& best = out.rounds[out.last.best_round].typed;
+    if (out.last.verdict == CorrectionVerdict::beyond_reach && out.last.next.frequency_hz == best.frequency_hz &&
+        out.last.next.damping_ratio == best.damping_ratio) {
+      break;
+    }
+    typed = out.last.next;
+  }
+  return out;
+}
+
+const char* verdict_name(CorrectionVerdict v) {
+  switch (v) {
+    case CorrectionVerdict::converging: return "converging";
+    case CorrectionVerdict::met: return "met";
+    case CorrectionVerdict::beyond_reach: return "beyond_reach";
+    case CorrectionVerdict::stalled: return "stalled";
+  }
+  return "?";
+}
+
+// Bullet's plain export cannot reach the request where setStiffness's limitIfNeeded (on by default)
+// replaces k by m / (16 h^2): sqrt(k / m) h > 0.25, above 2.39 Hz at 60 fps (core/src/engines/bullet.cpp).
+// Every other case here is reachable by typing some frequency and ratio, as its model's exact shows.
+bool plain_export_reaches(std::string_view engine, const TuneResult& tuned) {
+  return engine != "bullet" || !(tuned.omega * tuned.h > 0.25);
+}
+
+TEST(IdentifyRealEngines, BlackBoxRoundsConvergeOrSayWhyNot) {
+  for (const RealEngine* engine : real_engines()) {
+    const std::size_t index = model_index(engine->name);
+    for (const Case& c : kCases) {
+      const TuneRequest q = request_for(c.frequency_hz, c.damping_ratio);
+      const TuneResult tuned = tune(q);
+      if (!tuned.engine_reports[index].predicted.stable) continue;  // the plain export blows up (above)
+      const ResponseValues asked{c.frequency_hz, c.damping_ratio};
+      const BlackBoxRun run = black_box_rounds(*engine, index, asked);
+      ASSERT_FALSE(run.rounds.empty()) << engine->name;
+      std::printf("  %-11.*s %4.1f/%.2f:", static_cast<int>(engine->name.size()), engine->name.data(), c.frequency_hz,
+                  c.damping_ratio);
+      for (const CorrectionRound& r : run.rounds) {
+        std::printf(" | %.4f/%.4f -> %.4f/%.4f", r.typed.frequency_hz, r.typed.damping_ratio, r.measured.frequency_hz,
+                    r.measured.damping_ratio);
+      }
+      std::printf(" | %s (best %zu)\n", verdict_name(run.last.verdict), run.last.best_round + 1);
+      EXPECT_NE(run.last.verdict, CorrectionVerdict::converging) << engine->name << " " << c.frequency_hz;
+      if (plain_export_reaches(engine->name, tuned)) {
+        EXPECT_EQ(run.last.verdict, CorrectionVerdict::met) << engine->name << " " << c.frequency_hz;
+      }
+      if (run.last.verdict == CorrectionVerdict::met) {
+        EXPECT_TRUE(meets_bar(asked, run.rounds[run.last.best_round].measured)) << engine->name;
+      }
+    }
+  }
 }
 
 }  // namespace
