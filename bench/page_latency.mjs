@@ -103,6 +103,7 @@ try {
     const numbers = [], frames = [], bare = [], sends = [], answers = [];
     // Frames 5..120 in a scrambled order: each change a tuning this server has not seen (cold caches).
     const start = Number(await page.locator('#frames').inputValue());
+    const mode = await page.locator('input[name="mode"]:checked').getAttribute('value');  // the vehicle's own: exact
     const values = Array.from({ length: CHANGES + 1 }, (_, i) => 5 + ((i * 37) % 116)).filter((v) => v !== start).slice(0, CHANGES);
     for (const v of values) {
       const [n, f, sent, answered] = await change(page, v);
@@ -111,7 +112,7 @@ try {
       sends.push(sent);
       answers.push(answered);
       // The same tuning's bare round trip, on a mass the page never sent (so the response cache is cold).
-      bare.push(await bareTune(base, { fps: 60, substeps: 1, response_frames: v, basis_fps: 60, oscillation: 'some', mode: 'standard', effective_mass: mass * 1.001 }));
+      bare.push(await bareTune(base, { fps: 60, substeps: 1, response_frames: v, basis_fps: 60, oscillation: 'some', mode, effective_mass: mass * 1.001 }));
     }
     rows.push({ label, numbers, frames, bare, sends, answers });
     await page.close();
