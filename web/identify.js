@@ -8,6 +8,11 @@ import { ApiError } from './api.js';
 const MAX_CSV_BYTES = 1 << 20;  // the service's body limit (server/http/limits.h kMaxBodyBytes)
 
 let shown = null;  // { answer, engine, file } of the last recording identified
+// The rounds of one request in one engine, oldest first: what was typed for each recording and what it
+// measured. A recording dropped after the first is taken as made with the last answer's `next` typed, and
+// goes with the earlier rounds as `previous` (docs/identify.md), so the correction iterates.
+let rounds = { key: '', list: [], next: null };
+const MAX_PREVIOUS = 4;  // kIdentifyMaxPrevious (core/include/softtune/identify.h)
 let fillEngines = () => {};  // refreshes the engine choice from the latest tune answer
 
 /// The query of a text/csv identify request: the tune request's scalar fields, and the engine.
@@ -61,6 +66,25 @@ export function identifiedRow(answer, engine) {
   };
 }
 
+/// The JSON body of a recording that continues `list` (earlier rounds, oldest first): `typed` is what the
+/// user typed for it (the last answer's `next`), the newest rounds go as `previous`.
+export function roundBody(csv, request, engine, list, typed) {
+  const body = { csv, request };
+  if (engine) body.engine = engine;
+  if (typed) body.typed = { frequency_hz: typed.frequency_hz, damping_ratio: typed.damping_ratio };
+  if (list.length) body.previous = list.slice(-MAX_PREVIOUS).map((r) => ({ typed: r.typed, measured: r.measured }));
+  return body;
+}
+
+/// The round an answer adds: what was typed and what the recording measured (null when it measured no
+/// frequency to iterate on).
+export function roundOf(answer) {
+  const typed = answer?.correction?.typed;
+  if (!typed || typeof answer.frequency_hz !== 'number' || typeof answer.damping_ratio !== 'number') return null;
+  return { typed: { frequency_hz: typed.frequency_hz, damping_ratio: typed.damping_ratio },
+    measured: { frequency_hz: answer.frequency_hz, damping_ratio: Math.max(0, answer.damping_ratio) } };
+}
+
 /// Curves to overlay on the response plot (none before a recording is dropped).
 export function identifyOverlay() {
   return shown ? overlayCurves(shown.answer) : [];
@@ -108,8 +132,22 @@ export function installIdentify(panel, { request, engines, redraw }) {
   note.textContent = 'Drop a recorded trajectory (CSV: time, then a position or angle) on this panel.';
   const error = document.createElement('output');
   error.className = 'error';
+  // After a black-box correction: type `next` into the engine, record again, drop the new recording.
+  const again = document.createElement('small');
+  again.className = 'note';
+  again.dataset.testid = 'identify-again';
+  again.textContent = 'Type the values under "instead" into the engine, record again and drop the new recording: it is sent with the earlier ones, so the correction iterates.';
+  again.hidden = true;
+  const restart = document.createElement('button');
+  restart.type = 'button';
+  restart.textContent = 'Start the rounds over';
+  restart.hidden = true;
+  restart.addEventListener('click', () => {
+    rounds = { key: '', list: [], next: null };
+    again.hidden = restart.hidden = true;
+  });
   label.append(select);
-  box.append(label, input, note, error);
+  box.append(label, input, note, again, restart, error);
   panel.append(box);
 
   fillEngines = () => {
@@ -128,10 +166,16 @@ export function installIdentify(panel, { request, engines, redraw }) {
       error.textContent = `${file.name} is larger than the 1 MiB the service accepts`;
       return;
     }
-    const query = identifyQuery(request(), select.value);
+    const tuned = request();
+    const key = JSON.stringify([tuned, select.value]);
+    if (key !== rounds.key) rounds = { key, list: [], next: null };  // another request or engine: round 1
+    const csv = await file.text();
     let r;
     try {
-      r = await fetch(`api/v1/identify?${query}`, { method: 'POST', headers: { 'Content-Type': 'text/csv' }, body: await file.text() });
+      r = rounds.list.length === 0
+        ? await fetch(`api/v1/identify?${identifyQuery(tuned, select.value)}`, { method: 'POST', headers: { 'Content-Type': 'text/csv' }, body: csv })
+        : await fetch('api/v1/identify', { method: 'POST', headers: { 'Content-Type': 'application/json' },
+          body: JSON.stringify(roundBody(csv, tuned, select.value, rounds.list, rounds.next)) });
     } catch (e) {
       error.textContent = new ApiError(0, { detail: `Cannot reach the softtune server (${e.message})` }).message;
       return;
@@ -143,7 +187,13 @@ export function installIdentify(panel, { request, engines, redraw }) {
     }
     shown = { answer: doc, engine: select.value, file: file.name };
     window.softtune = { ...(window.softtune ?? {}), identify: doc };
-    note.textContent = `${file.name}: ${identifiedRow(doc, select.value).did}`;
+    const round = roundOf(doc);
+    if (round) rounds.list.push(round);
+    rounds.next = doc.correction?.next ?? null;
+    note.textContent = `${file.name} (round ${rounds.list.length || 1}): ${identifiedRow(doc, select.value).did}`;
+    note.dataset.round = String(rounds.list.length);
+    again.hidden = !(rounds.next && !doc.exact && doc.correction?.verdict !== 'met');
+    restart.hidden = rounds.list.length < 2;
     redraw();
   }
   input.addEventListener('change', () => input.files[0] && send(input.files[0]));

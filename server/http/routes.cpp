@@ -90,7 +90,9 @@ std::vector<Route> service_routes() {
        }},
       {"POST", "/api/v1/check", check},
       {"POST", "/api/v1/verify", json_contract(app::run_verify, "")},
-      {"POST", std::string(kIdentifyPath), identify},
+      // Its text/csv body takes the other fields from the query (every tune field by name, engine, typed_*):
+      // the identify codec reads and names each, and the handler refuses a query beside a JSON body.
+      {"POST", std::string(kIdentifyPath), identify, {"*"}},
       {"GET", "/api/v1/presets", presets},
       {"GET", "/api/v1/presets/{name}", preset},
       {"POST", "/api/v1/accuracy", accuracy, {"format"}},

@@ -50,6 +50,34 @@ TEST(IdentifyRoutes, CsvAndJsonBodies) {
   }
 }
 
+// Through the service's route table, as a client calls it: the CSV's query (the page's drop sends its tune
+// request and engine this way) reaches the codec, an unknown parameter is named by it, and a query beside a
+// JSON body is refused. The table once declared no query parameters, so every CSV with a query got a 422.
+TEST(IdentifyRoutes, TheServiceLetsTheCsvQueryThrough) {
+  Service service({}, service_routes());
+  HttpRequest csv = post("text/csv", "t,x\n0,1\n0.1,0.5\n0.2,0.2\n0.3,0.1\n");
+  csv.query.emplace("engine", "godot");
+  csv.query.emplace("response_frames", "12");
+  csv.query.emplace("basis_fps", "60");
+  csv.query.emplace("oscillation", "some");
+  csv.query.emplace("effective_mass", "1");
+  const HttpResponse ok = service.handle(csv);
+  ASSERT_EQ(ok.status, 200) << ok.body;
+  const nlohmann::json answer = nlohmann::json::parse(ok.body);
+  EXPECT_EQ(answer["engine"], "godot");
+  EXPECT_TRUE(answer.contains("correction")) << "the query's request reached the answer";
+  HttpRequest unknown = csv;
+  unknown.query.emplace("colour", "red");
+  const HttpResponse bad = service.handle(unknown);
+  EXPECT_EQ(bad.status, 422);
+  EXPECT_NE(nlohmann::json::parse(bad.body)["field"].get<std::string>().find("colour"), std::string::npos) << bad.body;
+  HttpRequest mixed = post("application/json", "{}");
+  mixed.query.emplace("engine", "godot");
+  const HttpResponse refused = service.handle(mixed);
+  EXPECT_EQ(refused.status, 422);
+  EXPECT_EQ(nlohmann::json::parse(refused.body)["field"], "engine");
+}
+
 // A correction's answer (typed with no damping, so next is a negative ratio, and an earlier round) conforms
 // to the documented 200, with the correction's verdict and its fields.
 TEST(IdentifyRoutes, CorrectionAnswerConformsToTheDocument) {

@@ -463,6 +463,51 @@ test('a preset tuned by its modes starts on its own mode, and a pick reaches the
   assert.deepEqual(consoleErrors, [], 'no console errors');
 });
 
+// A black-box engine for the identify rounds: what it does with what is typed (it runs 20 % slow and damps
+// 0.1 more, each a little coupled to the other figure), recorded at 60 Hz as the damped oscillator it is.
+function blackBoxRecording(typed) {
+  const f = 0.8 * typed.frequency_hz * (1 + 0.2 * (typed.damping_ratio - 0.5));
+  const zeta = typed.damping_ratio + 0.1 + 0.02 * (typed.frequency_hz - 5);
+  const w = 2 * Math.PI * f, wd = w * Math.sqrt(1 - zeta * zeta);
+  const rows = ['time,x'];
+  for (let n = 0; n <= 180; ++n) {
+    const t = n / 60;
+    rows.push(`${t},${0.25 + Math.exp(-zeta * w * t) * Math.cos(wd * t)}`);
+  }
+  return { f, zeta, csv: `${rows.join('\n')}\n` };
+}
+
+test('identify on the page: a recording dropped, then the next rounds, until the black box meets the request', async () => {
+  const page = await openPage(base, { width: 1440, height: 900 });
+  await expectNumbers(page, { fps: 60, substeps: 1, response_frames: 12, basis_fps: 60, mode: 'standard', oscillation: 'some', effective_mass: 1 });
+  const input = page.getByLabel('Recorded trajectory (CSV)');
+  let typed = { frequency_hz: 5, damping_ratio: 0.5 };  // round 1: the request as it is
+  let answer;
+  for (let round = 1; round <= 4; ++round) {
+    const engine = blackBoxRecording(typed);
+    await input.setInputFiles({ name: `round${round}.csv`, mimeType: 'text/csv', buffer: Buffer.from(engine.csv) });
+    await page.waitForFunction((n) => document.querySelector('[data-testid="identify-drop"] .note')?.dataset.round === String(n), round, { timeout: 20000 });
+    answer = await page.evaluate(() => window.softtune.identify);
+    // What the recording did is identified (the analytic oscillator: within 0.5 % / 0.01).
+    assert.ok(Math.abs(answer.frequency_hz / engine.f - 1) < 5e-3, `round ${round}: ${answer.frequency_hz} Hz for ${engine.f}`);
+    assert.ok(Math.abs(answer.damping_ratio - engine.zeta) < 0.01, `round ${round}: zeta ${answer.damping_ratio} for ${engine.zeta}`);
+    assert.equal(answer.correction.rounds, round, 'every earlier round went with the recording');
+    assert.deepEqual(answer.correction.typed.frequency_hz, typed.frequency_hz);
+    if (answer.correction.verdict === 'met') break;
+    assert.equal(answer.correction.verdict, 'converging', `round ${round}`);
+    assert.ok(await page.getByTestId('identify-again').isVisible(), 'the page says to record again');
+    typed = answer.correction.next;  // the designer types what the page says, and records again
+  }
+  assert.equal(answer.correction.verdict, 'met', JSON.stringify(answer.correction));
+  assert.ok(answer.correction.rounds >= 2, 'the first recording alone could not meet it');
+  // The engine table's row (redrawn with the numbers) says the rounds met the request.
+  await page.waitForFunction(() => /secant correction: met/.test(document.querySelector('[data-testid="identify-row"]')?.textContent ?? ''),
+    null, { timeout: 20000 });
+  assert.ok(await page.getByTestId('identify-again').isHidden());
+  await page.close();
+  assert.deepEqual(consoleErrors, [], 'no console errors');
+});
+
 test('an empty or non-numeric field is named at the field and never reads "Up to date"', async () => {
   const page = await openPage(base);
   const sent = await page.evaluate(() => JSON.stringify(window.softtune.request));
