@@ -120,11 +120,16 @@ export function showModes(panel, answer, pickedKey, doc = document) {
   };
   choice('each spring on its own mass', SPRINGS);
   let listed = pickedKey === SPRINGS;
+  const seen = new Set();
   for (const m of answer.modes ?? []) {
     if (m.free || m.unstable) continue;
     const target = modeTarget(m);
     if (!target) continue;
     const key = targetKey(target);
+    // A target names a body and its motion, so a second mode led by the same ("plank_7 heave 2") would pick
+    // the same solve: only the first (the slowest) is offered.
+    if (seen.has(key)) continue;
+    seen.add(key);
     listed ||= key === pickedKey;
     const li = choice(`${m.name}: ${fmtHz(m.discrete ?? m.continuous)}`, key);
     li.dataset.testid = 'mode';

@@ -460,6 +460,14 @@ test('a preset tuned by its modes starts on its own mode, and a pick reaches the
   assert.deepEqual(again.request, shown.request);
   await reloaded.waitForFunction(() => document.querySelector('input[name="target"]:checked')?.value === 'chassis.pitch', null, { timeout: 20000 });
   await reloaded.close();
+
+  // The bridge deck has two modes led by plank_7's heave: a pick names a body and motion, so one radio each.
+  const bridge = await openPage(`${base}?preset=bridge_deck`, { width: 1440, height: 900 });
+  await bridge.waitForFunction(() => document.querySelectorAll('input[name="target"][type="radio"]').length > 2, null, { timeout: 30000 });
+  const values = await bridge.locator('input[name="target"][type="radio"]').evaluateAll((els) => els.map((e) => e.value));
+  assert.equal(new Set(values).size, values.length, values.join(', '));
+  assert.equal(await bridge.locator('input[name="target"]:checked').getAttribute('value'), 'plank_5.heave');
+  await bridge.close();
   assert.deepEqual(consoleErrors, [], 'no console errors');
 });
 
