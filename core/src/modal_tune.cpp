@@ -18,6 +18,18 @@ constexpr double kUnreachedResidual = 10.0;  // stands for a target whose mode l
 
 std::string target_path(std::size_t i) { return "targets." + std::to_string(i); }
 
+// The unknowns of a group (modal_tune.h): p = (ln k, ln c) for the continuous poles; for the discrete ones
+// p = (ln k, ln(c + h k)), so that c may go negative as an exact spring's c' does (exact_softness.h: implicit
+// Euler's own damping exceeds a fast request's) while c + h k, and so Box2D's gamma = 1 / (h (c + h k)), stays
+// positive.
+SpringConstants spring_of(const ModalTuneRequest& q, double p_k, double p_c) {
+  const double k = std::exp(p_k);
+  return {k, q.discrete ? std::exp(p_c) - q.h * k : std::exp(p_c)};
+}
+double damping_unknown(const ModalTuneRequest& q, const SpringConstants& s) {
+  return std::log(q.discrete ? s.damping + q.h * s.stiffness : s.damping);
+}
+
 struct Evaluation {
   std::vector<Mode> modes;
   std::vector<int> mode_of_target;
@@ -36,8 +48,9 @@ class Solver {
     for (std::size_t i = 0; i < model_.rows.size(); ++i) c[i] = model_.rows[i].damping;
     for (std::size_t g = 0; g < request_.groups.size(); ++g) {
       for (int r : request_.groups[g].rows) {
-        k[r] = std::exp(p[2 * g]);
-        c[r] = std::exp(p[2 * g + 1]);
+        const SpringConstants spring = spring_of(request_, p[2 * g], p[2 * g + 1]);
+        k[r] = spring.stiffness;
+        c[r] = spring.damping;
       }
     }
     set_springs(system_, k, c);
@@ -46,7 +59,7 @@ class Solver {
     e.residual.resize(2 * request_.targets.size());
     for (std::size_t t = 0; t < request_.targets.size(); ++t) {
       const ModeTarget& target = request_.targets[t];
-      const int m = find_mode(e.modes, target.body, target.dof);
+      const int m = followed_[t].size() ? track_mode(model_, e.modes, followed_[t]) : find_mode(e.modes, target.body, target.dof);
       e.mode_of_target.push_back(m);
       const std::optional<Pole> pole = m < 0 ? std::nullopt : (request_.discrete ? e.modes[m].discrete : e.modes[m].continuous);
       if (!pole) {
@@ -59,13 +72,20 @@ class Solver {
     return e;
   }
 
-  const std::vector<int>& tuned_rows() const { return tuned_rows_; }
+  // From now on each target is the mode that continues its shape in `e` (modal_tune.h).
+  void follow(const Evaluation& e) {
+    followed_.resize(request_.targets.size());
+    for (std::size_t t = 0; t < request_.targets.size(); ++t) {
+      if (e.mode_of_target[t] >= 0) followed_[t] = e.modes[e.mode_of_target[t]].shape;
+    }
+  }
 
  private:
   const LinearModel& model_;
   ReducedSystem& system_;
   const ModalTuneRequest& request_;
   std::vector<int> tuned_rows_;
+  std::vector<Eigen::VectorXd> followed_ = std::vector<Eigen::VectorXd>(request_.targets.size());
 };
 
 }  // namespace
@@ -82,6 +102,8 @@ ModalTuneResult solve_modal_tune(const LinearModel& model, ReducedSystem& system
     if (request.discrete) {
       const double omega_max = exact_max_omega(target.damping_ratio, request.h);
       if (2.0 * std::numbers::pi * target.frequency_hz >= omega_max) {
+        out.refusal = Refusal::step_limit;
+      out.refused_target = static_cast<int>(t);
         out.error = FieldError{target_path(t) + ".frequency_hz",
                                "is beyond what the step represents in exact mode: at most " +
                                    std::to_string(omega_max / (2.0 * std::numbers::pi)) + " Hz at this damping ratio and h = " +
@@ -95,23 +117,28 @@ ModalTuneResult solve_modal_tune(const LinearModel& model, ReducedSystem& system
   Eigen::VectorXd p(unknowns);
   for (std::size_t g = 0; g < request.groups.size(); ++g) {
     p[2 * g] = std::log(request.groups[g].start.stiffness);
-    p[2 * g + 1] = std::log(request.groups[g].start.damping);
+    p[2 * g + 1] = damping_unknown(request, request.groups[g].start);
   }
   Evaluation current = solver.evaluate(p);
   for (std::size_t t = 0; t < request.targets.size(); ++t) {
     const ModeTarget& target = request.targets[t];
     const int m = current.mode_of_target[t];
     if (m < 0) {
+      out.refusal = Refusal::no_mode;
+      out.refused_target = static_cast<int>(t);
       out.error = FieldError{target_path(t), "no mode of the scene moves " + model.bodies[target.body].id + " in " +
                                                  std::string(dof_word(target.dof))};
       return out;
     }
     if (current.modes[m].tuned_energy_share < kMinTunedEnergyShare) {
+      out.refusal = Refusal::not_moved;
+      out.refused_target = static_cast<int>(t);
       out.error = FieldError{target_path(t), "the tuned joints do not move mode '" + current.modes[m].name +
                                                  "' (they store none of its energy): tune joints that it stretches"};
       return out;
     }
   }
+  solver.follow(current);
 
   double mu = 1e-3;
   for (out.iterations = 0; out.iterations < kMaxIterations; ++out.iterations) {
@@ -137,6 +164,7 @@ ModalTuneResult solve_modal_tune(const LinearModel& model, ReducedSystem& system
       if (trial.residual.squaredNorm() < cost) {
         p += step;
         current = std::move(trial);
+        solver.follow(current);
         mu = std::max(mu / 3.0, 1e-12);
         improved = true;
       } else {
@@ -149,7 +177,7 @@ ModalTuneResult solve_modal_tune(const LinearModel& model, ReducedSystem& system
 
   out.residual = current.residual.norm();
   out.modes = current.modes;
-  for (std::size_t g = 0; g < request.groups.size(); ++g) out.groups.push_back({std::exp(p[2 * g]), std::exp(p[2 * g + 1])});
+  for (std::size_t g = 0; g < request.groups.size(); ++g) out.groups.push_back(spring_of(request, p[2 * g], p[2 * g + 1]));
   std::size_t worst = 0;
   for (std::size_t t = 0; t < request.targets.size(); ++t) {
     TargetOutcome o;
@@ -167,6 +195,8 @@ ModalTuneResult solve_modal_tune(const LinearModel& model, ReducedSystem& system
     std::string best = o.predicted ? "the closest the joints get is " + std::to_string(o.predicted->frequency_hz) + " Hz, zeta " +
                                          std::to_string(o.predicted->damping_ratio)
                                    : "the mode has no oscillating poles there";
+    out.refusal = Refusal::unreached;
+    out.refused_target = static_cast<int>(worst);
     out.error = FieldError{target_path(worst), "cannot be reached by tuning the given joints: " + best};
   }
   return out;

@@ -324,4 +324,26 @@ int find_mode(const std::vector<Mode>& modes, int body, Dof dof) {
   return best;
 }
 
+int track_mode(const LinearModel& m, const std::vector<Mode>& modes, const Eigen::VectorXd& shape) {
+  Eigen::VectorXd mass(kBodyDofs * m.bodies.size());
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    mass.segment<3>(kBodyDofs * b) << m.bodies[b].mass, m.bodies[b].mass, m.bodies[b].inertia;
+  }
+  const double own = shape.dot(mass.cwiseProduct(shape));
+  if (!(own > 0.0)) return -1;
+  int best = -1;
+  double best_overlap = -1.0;
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    if (modes[i].free || modes[i].unstable || modes[i].shape.size() != shape.size()) continue;
+    const Eigen::VectorXd& q = modes[i].shape;
+    const double cross = q.dot(mass.cwiseProduct(shape));
+    const double overlap = cross * cross / (q.dot(mass.cwiseProduct(q)) * own);
+    if (overlap > best_overlap) {
+      best_overlap = overlap;
+      best = static_cast<int>(i);
+    }
+  }
+  return best;
+}
+
 }  // namespace softtune::modes

@@ -194,56 +194,6 @@ std::vector<std::pair<int, int>> trailed_points(const scene::Scene& scene) {
   return out;
 }
 
-std::vector<std::string> scene_legend(const scene::Scene& scene, const scene::SceneResult& result) {
-  std::vector<std::string> out;
-  // Joints no probe measures are grouped by what was asked ("hanger_0 … hanger_9 (10): asked ..."), so a
-  // bridge's ten hangers take one line and the measured ones stay readable.
-  struct Group {
-    std::string ask, first, last;
-    int count = 0;
-  };
-  std::vector<Group> unmeasured;
-  for (const scene::JointTuning& t : result.joints) {
-    if (!t.tuned) continue;
-    const scene::ProbeResult* probe = nullptr;
-    for (std::size_t i = 0; i < result.probes.size() && i < scene.probes.size(); ++i) {
-      if (scene.probes[i].joint == t.joint && result.probes[i].measured.frequency_hz && !probe) probe = &result.probes[i];
-    }
-    char ask[96], line[200];
-    std::snprintf(ask, sizeof ask, "asked %.2f %s \u03b6 %.2f", t.requested_frequency_hz, t.angular ? "Hz (rot)" : "Hz",
-                  t.requested_damping_ratio);
-    if (probe && probe->measured.damping_ratio) {
-      std::snprintf(line, sizeof line, "%s: %s \u2192 measured %.2f, \u03b6 %.2f", t.joint.c_str(), ask,
-                    *probe->measured.frequency_hz, *probe->measured.damping_ratio);
-      out.push_back(line);
-      continue;
-    }
-    auto g = std::find_if(unmeasured.begin(), unmeasured.end(), [&](const Group& x) { return x.ask == ask; });
-    if (g == unmeasured.end()) g = unmeasured.insert(unmeasured.end(), Group{ask, t.joint, t.joint, 0});
-    g->last = t.joint;
-    ++g->count;
-  }
-  for (const Group& g : unmeasured) {
-    const std::string who = g.count == 1 ? g.first : g.first + " \u2026 " + g.last + " (" + std::to_string(g.count) + ")";
-    out.push_back(who + ": " + g.ask + " (not measured)");
-  }
-  return out;
-}
-
-std::string scene_settings(const scene::Scene& scene) {
-  std::string modes;
-  for (const scene::JointSettings& j : scene.joints) {
-    if (!j.tuning) continue;
-    const std::string m = j.tuning->mode == SoftMode::exact ? "exact" : "standard";
-    if (modes.find(m) == std::string::npos) modes += (modes.empty() ? "" : "+") + m;
-  }
-  char line[160];
-  const int substeps = scene.world.substeps;
-  std::snprintf(line, sizeof line, "%s%s%g fps \u00d7 %d substep%s", modes.c_str(), modes.empty() ? "" : " \u00b7 ",
-                scene.world.fps, substeps, substeps == 1 ? "" : "s");
-  return line;
-}
-
 render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots, int index) {
   const scene::Snapshot& snapshot = snapshots[index];
   const int count = static_cast<int>(snapshots.size());

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/scene_legend.h"
 #include "softtune/render/frame_pipeline.h"
 #include "softtune/scene/runner.h"
 #include "softtune/scene/scene.h"
@@ -47,13 +48,6 @@ int left_frame_at(const scene::OscillatorRun& run, double limit_m);
 /// leaves the frame (|x| > kOscillatorLimit rest lengths); from then on "blew up at frame N".
 void add_oscillators(render::DrawFrame& frame, const scene::Scene& scene, const scene::SceneResult& result,
                      const scene::Snapshot& snapshot);
-
-/// The legend of a run: per tuned joint, what was asked (frequency, damping ratio) against what its first
-/// probe with a fit measured over the run; joints no probe measures grouped by what was asked.
-std::vector<std::string> scene_legend(const scene::Scene& scene, const scene::SceneResult& result);
-
-/// The band's settings line: the tuned joints' mode(s), fps and substeps.
-std::string scene_settings(const scene::Scene& scene);
 
 /// Every snapshot as a frame, with their times, the legend of `result` (when given) and the scene's
 /// camera: fitted to the action over the run, following `camera.follow`, or (with `camera.fit` false)

@@ -109,7 +109,8 @@ json modal_tuning_json(const ModalTuningResult& modal, const SceneResult& run) {
   }
   return {{"groups", std::move(groups)}, {"joints", std::move(joints)}, {"targets", std::move(targets)},
           {"residual", number_or_null(modal.residual)}, {"least_squares", modal.least_squares}, {"iterations", modal.iterations},
-          {"at_s", number_or_null(modal.at_s)}, {"settled", modal.settled}, {"modes", modes_json(modal.modes, modal.body_ids)}};
+          {"rounds", modal.rounds}, {"start_stiffenings", modal.start_stiffenings},
+          {"fell_back_to_standard", modal.fell_back_to_standard}, {"at_s", number_or_null(modal.at_s)}, {"settled", modal.settled}, {"modes", modes_json(modal.modes, modal.body_ids)}};
 }
 
 json linearisation_json(const std::string& name, const LinearisedScene& lin, const std::vector<modes::Mode>& all, const StageList& stages) {

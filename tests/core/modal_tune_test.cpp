@@ -74,6 +74,27 @@ TEST(ModalTune, ExactModeIsTheExactSpringOfTheHeaveAt30And60Fps) {
   }
 }
 
+// A fast heave at a coarse step (8 Hz, zeta 0.5 at 30 fps: omega h = 1.68) needs the exact spring's c' < 0 --
+// implicit Euler's own damping already exceeds the request -- which the exact solve reaches through its unknown
+// ln(c + h k) (modal_tune.h): again each spring is half the exact spring of (M, w, zeta) at h.
+TEST(ModalTune, ExactModeReachesANegativeDampingFastHeave) {
+  const double mass = 120.0, f = 8.0, zeta = 0.5, h = 1.0 / 30.0;
+  const ExactSpring exact = exact_spring(mass, (2.0 * std::numbers::pi) * f, zeta, h);
+  ASSERT_LT(exact.spring.damping, 0.0);
+  const LinearModel m = bar(mass, 92.5, 1.1, 1.1);
+  ReducedSystem s = reduce(m);
+  ModalTuneRequest q;
+  q.targets = {{0, Dof::y, f, zeta}};
+  q.groups = {{{0, 1}, {1000.0, 10.0}}};
+  q.discrete = true;
+  q.h = h;
+  const ModalTuneResult r = solve_modal_tune(m, s, q);
+  ASSERT_FALSE(r.error) << r.error->rule;
+  EXPECT_NEAR(2.0 * r.groups[0].stiffness / exact.spring.stiffness, 1.0, 1e-7);
+  EXPECT_NEAR(2.0 * r.groups[0].damping / exact.spring.damping, 1.0, 1e-7);
+  EXPECT_GT(r.groups[0].damping + h * r.groups[0].stiffness, 0.0);  // Box2D's gamma stays finite and positive
+}
+
 // Springs at -a and +b with k1 a = k2 b and c1 a = c2 b leave heave and pitch uncoupled:
 // heave w^2 = (k1 + k2) / M, 2 zeta w = (c1 + c2) / M; pitch w^2 = (k1 a^2 + k2 b^2) / I, 2 zeta w = (c1 a^2 + c2 b^2) / I.
 TEST(ModalTune, TwoGroupsPlaceHeaveAndPitchTogether) {

@@ -98,6 +98,31 @@ TEST(Modes, RigidBarOnTwoSpringsHeavesAndPitchesAsItsFormulas) {
   EXPECT_LT(heave.discrete->frequency_hz, heave.continuous->frequency_hz);  // implicit Euler runs slow
 }
 
+// track_mode follows a mode by its shape: the bar's heave and pitch are found from their own shapes, and when
+// the springs move out until pitch is faster than heave (the order of `modes` swaps), each shape still finds its
+// own mode (their overlap is 0: heave and pitch of a symmetric bar are M-orthogonal).
+TEST(Modes, TrackModeFollowsAShapeAcrossAFrequencyCrossing) {
+  // Springs at +-0.5 m: pitch w^2 = 2 k d^2 / I = 21.6 below heave w^2 = 2 k / M = 66.7.
+  const double mass = 120.0, inertia = 92.5, d = 0.5;
+  LinearModel m;
+  m.gravity = {0, 0};
+  m.bodies = {{"chassis", mass, inertia, {0, 1}}};
+  m.rows = {soft_vertical(-1, 0, {-d, 0}, {-d, 0}, 4000.0, 200.0), soft_vertical(-1, 0, {d, 0}, {d, 0}, 4000.0, 200.0), rigid(0, false)};
+  ReducedSystem s = reduce(m);
+  const auto before = modes_of(m, s, 0.0);
+  const int heave = find_mode(before, 0, Dof::y), pitch = find_mode(before, 0, Dof::angle);
+  EXPECT_EQ(track_mode(m, before, before[heave].shape), heave);
+  EXPECT_EQ(track_mode(m, before, before[pitch].shape), pitch);
+  // The springs moved out to +-3 m: pitch w^2 = 778 is now above heave's 66.7.
+  m.rows = {soft_vertical(-1, 0, {-3, 0}, {-3, 0}, 4000.0, 200.0), soft_vertical(-1, 0, {3, 0}, {3, 0}, 4000.0, 200.0), rigid(0, false)};
+  s = reduce(m);
+  const auto after = modes_of(m, s, 0.0);
+  ASSERT_EQ(before[0].name, "chassis pitch");
+  ASSERT_EQ(after[0].name, "chassis heave");
+  EXPECT_EQ(after[track_mode(m, after, before[heave].shape)].name, "chassis heave");
+  EXPECT_EQ(after[track_mode(m, after, before[pitch].shape)].name, "chassis pitch");
+}
+
 // A pendulum has no spring at all: its stiffness is the rod's tension times the rod's curvature (-f H), and
 // rigid_row_forces finds that tension. A bob held at its centre by a rod of length L swings at w^2 = g / L
 // (its spin about the centre is free); a spring of stiffness k in place of the rod adds the bounce w^2 = k / m.

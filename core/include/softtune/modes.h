@@ -129,4 +129,11 @@ std::vector<Mode> modes_of(const LinearModel& model, const ReducedSystem& system
 /// that coordinate; -1 when no mode moves it.
 int find_mode(const std::vector<Mode>& modes, int body, Dof dof);
 
+/// The mode that continues `shape` (3n generalised coordinates: a Mode::shape of a nearby system, e.g. before a
+/// step of a solve changed the springs): the non-free, stable mode with the largest mass-weighted overlap
+///   (q^T M s)^2 / ((q^T M q)(s^T M s))   (1: the same shape, 0: M-orthogonal),
+/// so a mode keeps its identity while its frequency crosses another's or its largest component changes. -1 when
+/// every mode is free or unstable.
+int track_mode(const LinearModel& model, const std::vector<Mode>& modes, const Eigen::VectorXd& shape);
+
 }  // namespace softtune::modes

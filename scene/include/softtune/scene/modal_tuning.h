@@ -1,7 +1,10 @@
 #pragma once
 // A scene's modal tuning (ModalTuningSettings): linearise it at rest with the joints' own tunings as the first
 // guess (linearise.h), solve the groups' k, c for the targeted modes (core modal_tune.h), then linearise again
-// at the new rest state (the sag changes with k) and solve once more from there. The solved k, c go back into
+// at the new rest state (the sag changes with k) and solve once more from there, until the springs settle.
+// A first guess too soft to hold the body up (the page's slow requests: a per-spring tuning sags the car onto
+// the road, where no mode moves the chassis) is stiffened until the mode is there; a request whose own springs
+// sag the body onto its contacts is refused, naming the target. The solved k, c go back into
 // the scene as each joint's equivalent standard designer request on its own mass (f = sqrt(k / m) / (2 pi),
 // zeta = c / (2 sqrt(k m))), which the runner turns into exactly that k, c for Box2D; a probe a target measures
 // is given the target's request, so its frequency_error and damping_ratio_error are against the mode asked.
@@ -17,8 +20,18 @@
 
 namespace softtune::scene {
 
-/// Linearise-and-solve rounds (the second starts at the rest state of the first's springs).
-inline constexpr int kModalRounds = 2;
+/// Linearise-and-solve rounds: each starts at the rest state of the last one's springs (the sag changes with
+/// k); at least kMinModalRounds, then until the solved k and c change by less than kModalRoundTolerance
+/// (in ln k, ln c) from one round to the next, at most kMaxModalRounds.
+inline constexpr int kMinModalRounds = 2;
+inline constexpr int kMaxModalRounds = 6;
+inline constexpr double kModalRoundTolerance = 1e-4;
+/// When the first guess (the joints' own tunings) leaves the targeted mode out -- the springs sag the body onto
+/// the ground, which then holds it -- and the body hangs on a grouped joint (directly or through other joints),
+/// the start is stiffened by this factor in k (sqrt of it in c: the same damping ratio) and the scene settled
+/// again, at most kMaxStartStiffenings times (8^4 = 4096 x k: 64 x the frequency).
+inline constexpr double kStartStiffening = 8.0;
+inline constexpr int kMaxStartStiffenings = 4;
 
 struct ModalTargetResult {
   std::string mode;                     ///< the mode's name in the solved system ("chassis heave")
@@ -43,7 +56,11 @@ struct ModalTuningResult {
   std::vector<std::string> body_ids;    ///< model body -> id
   double residual = 0.0;
   bool least_squares = false;
-  int iterations = 0;
+  int iterations = 0;                   ///< of the last round's solve
+  int rounds = 0;                       ///< linearise-and-solve rounds run (kMinModalRounds..kMaxModalRounds)
+  int start_stiffenings = 0;            ///< times the first guess was stiffened to find the mode
+  /// Exact mode with a target at zeta = 0 (no positive damping gives discrete zeta 0): the continuous poles solved.
+  bool fell_back_to_standard = false;
   double at_s = 0.0;                    ///< s, when the last linearisation read the rest state
   bool settled = false;
 };
