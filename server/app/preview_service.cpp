@@ -106,9 +106,11 @@ void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::M
       for (int i = 0; i < frames && !b.snapshots.empty(); ++i) {
         add_ghost(set.frames[i], *ghost, b.snapshots[std::min<std::size_t>(i, b.snapshots.size() - 1)]);
       }
-      if (!set.frames.empty()) {
-        for (render::DrawFrame& f : set.frames) f.legend.push_back("pink ghost: " + scene_legend(*ghost, b).front());
-      }
+      // The ghost's first legend line (its mode target, or its first joint's ask), once for every frame; a
+      // legend with nothing to say (no line) still names the ghost.
+      const std::vector<std::string> lines = scene_legend(*ghost, b);
+      const std::string ghost_line = "pink ghost: " + (lines.empty() ? std::string("the second tuning") : lines.front());
+      for (render::DrawFrame& f : set.frames) f.legend.push_back(ghost_line);
     }
     return set;
   };

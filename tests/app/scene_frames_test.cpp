@@ -266,42 +266,5 @@ TEST(SceneFrames, TextLandsInsideTheTitleBand) {
   }
 }
 
-// A modally tuned scene is asked for a motion: the vehicle's legend names the chassis heave with the designer's
-// 3 Hz / 0.5 (the preset's 20 frames at 60 fps, some oscillation) against what Box2D measured on the target's
-// probe, and the solved springs; not each spring's equivalent per-spring request (7.44 Hz, zeta 0.86), which
-// nobody asked for. The settings line carries the modal solve's mode (exact).
-TEST(SceneFrames, ModalLegendNamesTheModeTarget) {
-  for (const std::string name : {"vehicle", "bridge_deck"}) {
-    SCOPED_TRACE(name);
-    PresetRun r = run(name);
-    scene::RunOptions options;
-    options.record_frames = true;
-    const scene::SceneResult result = scene::run_scene(r.scene, options);
-    ASSERT_FALSE(result.error);
-    ASSERT_TRUE(result.modal_tuning);
-    const render::FrameSet set = scene_frames(r.scene, result.snapshots, &result);
-    const std::vector<std::string>& legend = set.frames.front().legend;
-    const scene::ModalTargetResult& target = result.modal_tuning->targets.at(0);
-    const scene::ProbeResult* probe = nullptr;
-    for (const scene::ProbeResult& p : result.probes) probe = p.id == target.probe ? &p : probe;
-    ASSERT_TRUE(probe && probe->measured.frequency_hz && probe->measured.damping_ratio);
-    const double asked_hz = 60.0 / r.doc["modal_tuning"]["targets"][0]["response_frames"].get<double>();
-    char expected[200];
-    std::snprintf(expected, sizeof expected, "%s: asked %.2f Hz \u03b6 0.50 \u2192 measured %.2f, \u03b6 %.2f",
-                  name == "vehicle" ? "chassis heave" : "plank_5 heave", asked_hz, *probe->measured.frequency_hz,
-                  *probe->measured.damping_ratio);
-    ASSERT_FALSE(legend.empty());
-    EXPECT_EQ(legend.front(), expected);
-    const scene::ModalGroupResult& group = result.modal_tuning->groups.at(0);
-    const std::string solved = group.id + " (" + std::to_string(group.joints.size()) + " joints): solved k ";
-    EXPECT_TRUE(std::any_of(legend.begin(), legend.end(), [&](const std::string& l) { return l.rfind(solved, 0) == 0; }));
-    // No line for a grouped joint's own (solve-equivalent) request.
-    for (const std::string& joint : group.joints) {
-      for (const std::string& line : legend) EXPECT_NE(line.rfind(joint + ":", 0), 0u) << line;
-    }
-    EXPECT_EQ(set.frames.front().settings.rfind("exact \u00b7 ", 0), 0u) << set.frames.front().settings;
-  }
-}
-
 }  // namespace
 }  // namespace softtune::app
