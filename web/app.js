@@ -249,22 +249,41 @@ async function runTune() {
   showSummary($('summary'), tune, joint ? `joint ${joint.id}` : '');
   showNumbers(results, tune);
   comparison.showNumbers();
+  // The preview is what a designer watches: it starts now, before the plots are built. The oscillator's needs
+  // this answer (its mass and duration); a Box2D preset's started with the change (schedulePreview) unless
+  // the preset was just opened, and the same request is not sent twice.
+  runPreview(state, tune);
   // Let the numbers paint before the tables and plots are built (a frame, then the rest).
   const seq = ++tuneShown;
   await tracked(new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0))));
   if (seq !== tuneShown) return;
-  $('mass-terms').hidden = !showMassTerms($('mass-terms-table').querySelector('tbody'), tune, state.ctype === 'angular');
-  if (!$('mass-terms').hidden) drawConstraint($('constraint-drawing'), state);
-  showStability(results, tune, Number(state.fps), Number(state.substeps));
-  showEngines(results, tune);
-  showChain(document, tune);
-  showIdentified(results);
-  const series = responseSeries(tune);
-  lastSeries = series;
-  drawResponse($('plot-response'), series, chosenMethod(tune), comparison.pinned?.series, identifyOverlay());
-  $('response-note').textContent = sameCurve(series.methods.soft, series.methods.implicit_euler)
-    ? 'The soft constraint and implicit Euler draw one curve: they are the same integrator (Catto, GDC 2011).' : '';
-  drawError($('plot-error'), series);
+  // One panel per task: between them the preview's answers and frames get the main thread (built at once,
+  // they held the first preview frame back by 150-250 ms in headless Chromium on two cores).
+  const steps = [
+    () => {
+      $('mass-terms').hidden = !showMassTerms($('mass-terms-table').querySelector('tbody'), tune, state.ctype === 'angular');
+      if (!$('mass-terms').hidden) drawConstraint($('constraint-drawing'), state);
+      showStability(results, tune, Number(state.fps), Number(state.substeps));
+    },
+    () => showEngines(results, tune),
+    () => {
+      showChain(document, tune);
+      showIdentified(results);
+    },
+    () => {
+      const series = responseSeries(tune);
+      lastSeries = series;
+      drawResponse($('plot-response'), series, chosenMethod(tune), comparison.pinned?.series, identifyOverlay());
+      $('response-note').textContent = sameCurve(series.methods.soft, series.methods.implicit_euler)
+        ? 'The soft constraint and implicit Euler draw one curve: they are the same integrator (Catto, GDC 2011).' : '';
+    },
+    () => drawError($('plot-error'), lastSeries),
+  ];
+  for (const [i, step] of steps.entries()) {
+    if (i > 0) await tracked(new Promise((r) => setTimeout(r, 0)));
+    if (seq !== tuneShown) return;
+    step();
+  }
   scheduleSlow(state, request, tune);
 }
 
@@ -290,14 +309,16 @@ function sameCurve(a, b) {
 
 // ---- the slower panels: simulate, accuracy, preview ------------------------------------------------
 
-// The preview first: it is what a designer watches. The wait lets a drag settle before frames are
-// rendered (a render in the pool is not cancelled when a newer tuning arrives).
+// The simulation and the accuracy run wait for a drag to settle. The preview does not: the render pool
+// takes the newest preview first (render/src/frame_pipeline.cpp), so a drag's stale previews render behind
+// the one the designer waits for, and stay cached for undo.
 const scheduleSlow = trackedDebounce((state, request, tune) => {
-  runPreview(state, tune);
   runSimulate(state, tune);
   runAccuracy(request);
 }, 100);
-// A Box2D preset's preview needs no tune answer (the server tunes the scene): it starts with the change.
+// A Box2D preset's preview needs no tune answer (the server tunes the scene): it starts with the change,
+// a little after the tune request, whose answer it would otherwise slow down (its scene's run and modal
+// solve take the server's cores for 50 ms: at 30 ms the numbers' p95 went from 95 to 224 ms).
 const schedulePreview = trackedDebounce(() => {
   const state = readForm(form);
   if (box2dPreset(state) && inputProblems(form).length === 0) runPreview(state, null);
@@ -433,6 +454,7 @@ async function runPreview(state, tune) {
   const text = JSON.stringify(request);
   if (text === lastPreview) return;  // asked already (a preset's preview starts with the change)
   lastPreview = text;
+  player.supersede();  // the frames of the preview this one replaces stop loading
   $('preview').dataset.request = text;  // what this preview shows, for tests and tools
   try {
     const doc = await tracked(channels.preview.run(async (signal) => {
@@ -451,7 +473,7 @@ async function runPreview(state, tune) {
           player.first(`${answer.progress_url}/0.png`);
           shownFirst = true;
         }
-        await new Promise((r) => setTimeout(r, 50));
+        await new Promise((r) => setTimeout(r, 20));  // a progress poll is a small answer from memory
         if (signal.aborted) throw new DOMException('aborted', 'AbortError');
         answer = await callJson('GET', `api/v1/preview/${encodeURIComponent(answer.id)}`, undefined, signal);
       }

@@ -218,8 +218,11 @@ std::shared_ptr<PreviewJob> FramePipeline::submit(std::string_view canonical_req
   job->pngs.resize(settings.frames);
   job->ready = std::make_unique<std::atomic<bool>[]>(settings.frames);
   {
+    // Newest job first: a designer's latest change is the preview they wait for, while the frames of the one
+    // it replaced still render after it (cached, for undo). With a FIFO a drag's new first frame waited for
+    // the whole tail of the previous preview (a page-latency p95 of 0.8 s). Within a job, frame 0 first.
     std::lock_guard lock(queue_mutex_);
-    for (int i = 0; i < settings.frames; ++i) queue_.push_back({job, i});
+    for (int i = settings.frames - 1; i >= 0; --i) queue_.push_front({job, i});
   }
   queue_cv_.notify_all();
   return std::make_shared<PreviewJob>(job);

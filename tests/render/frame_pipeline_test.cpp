@@ -292,6 +292,30 @@ TEST(FramePipeline, AFrameStaysServedWhileTheJobFinishes) {
   }
 }
 
+// A renderer that takes a while per frame, so a job's tail is still rendering when the next job comes.
+class SlowRenderer final : public Renderer {
+ public:
+  void render(const DrawFrame&, const Camera&, ImageSize, std::span<std::uint8_t> rgba) override {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::fill(rgba.begin(), rgba.end(), std::uint8_t{128});
+  }
+};
+
+// The newest job renders first: its frame 0 is ready while the job it replaced still has most of its frames
+// to render, and that job still finishes, every frame.
+TEST(FramePipeline, TheNewestJobsFirstFrameDoesNotWaitForAnOlderJobsTail) {
+  PipelineOptions o;
+  o.make_renderer = [] { return std::make_unique<SlowRenderer>(); };
+  FramePipeline p(o);
+  const auto older = p.submit("older", small(200), [] { return sliding_box(200); });
+  while (older->progress().ready < 1) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  const auto newer = p.submit("newer", small(20), [] { return sliding_box(20); });
+  while (newer->progress().ready < 1) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_LT(older->progress().done, 100) << "the new first frame waited for the older job";
+  EXPECT_EQ(newer->wait()->frames_png.size(), 20u);
+  EXPECT_EQ(older->wait()->frames_png.size(), 200u);
+}
+
 TEST(FramePipeline, AFailedFrameFailsTheJobAndIsNotCached) {
   std::atomic<bool> failing{true};
   FramePipeline p(fake_options(&failing));
