@@ -109,8 +109,8 @@ export function sceneTuning(state) {
 /// once loaded) with the picked mode as the modal target, or without modal tuning (modes.js targetedScene).
 export function presetRequest(state, scene) {
   const tuning = sceneTuning(state);
-  if (!scene || !state.target || state.target === targetKey(sceneTarget(scene))) return { preset: state.preset, tuning };
-  return { scene: targetedScene(scene, tuningFields(state), state.target), tuning };
+  const asked = scene && state.target ? targetedScene(scene, tuningFields(state), state.target) : scene;
+  return asked === scene ? { preset: state.preset, tuning } : { scene: asked, tuning };
 }
 
 /// Controls a preset scene sets: the step, the mode pick, and the tuning of its modal target or else of its

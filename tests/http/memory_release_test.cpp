@@ -8,6 +8,7 @@
 
 #include "http/routes.h"
 #include "http/service.h"
+#include "../sanitizer_build.h"
 
 using softtune::http::HttpRequest;
 using softtune::http::Service;
@@ -74,23 +75,12 @@ TEST(MemoryRelease, TrimsAfterLargeRequestsOnly) {
   EXPECT_EQ(m.trims(), 4u);
 }
 
-// gcc says __SANITIZE_ADDRESS__ / __SANITIZE_THREAD__, clang (the sanitizer builds) __has_feature.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define SOFTTUNE_SANITIZER_ALLOCATOR 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define SOFTTUNE_SANITIZER_ALLOCATOR 1
-#endif
-#endif
-#ifndef SOFTTUNE_SANITIZER_ALLOCATOR
-#define SOFTTUNE_SANITIZER_ALLOCATOR 0
-#endif
 
 // After a warm-up (one request of each kind), eight threads send a mixed sequence; when they are done
 // the resident set must be back within twice its warmed-up size. Without the trims it ended at 46 MB
 // after a 15 MB warm-up (with them: 12 MB). ASan's allocator keeps freed memory in quarantine on purpose.
 TEST(MemoryRelease, ResidentSetReturnsAfterAMixedConcurrentSequence) {
-#if SOFTTUNE_SANITIZER_ALLOCATOR
+#if SOFTTUNE_SANITIZED_BUILD
   GTEST_SKIP() << "sanitizer allocators keep freed memory";
 #else
   softtune::http::ServiceConfig config;

@@ -23,6 +23,7 @@
 #include "softtune/exact_softness.h"
 #include "softtune/scene/modal_tuning.h"
 #include "../presets_dir.h"
+#include "../sanitizer_build.h"
 
 namespace softtune::scene {
 namespace {
@@ -59,20 +60,9 @@ bool truly_unreachable(const RangeCase& c, double fps, double f_hz, double zeta,
   return sag > 0.9 * c.clearance_m && e.rule.find("let the scene rest with") != std::string::npos;
 }
 
-// Under ASan/UBSan and TSan (clang: __has_feature) the solve runs 20-50 times slower: the bridge deck's full
+// Under ASan/UBSan and TSan (sanitizer_build.h) the solve runs 20-50 times slower: the bridge deck's full
 // sweep (35 s in Release) overran ctest's 900 s there, so the sanitizer builds sweep every 8th request.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define SOFTTUNE_RANGE_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define SOFTTUNE_RANGE_SANITIZED 1
-#endif
-#endif
-#ifdef SOFTTUNE_RANGE_SANITIZED
-constexpr int kRangeStrideScale = 8;
-#else
-constexpr int kRangeStrideScale = 1;
-#endif
+constexpr int kRangeStrideScale = SOFTTUNE_SANITIZED_BUILD ? 8 : 1;
 
 void sweep(const RangeCase& c) {
   int refused = 0, unreachable = 0, gaps = 0;
