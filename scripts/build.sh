@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Configures and builds softtune into build/ (Release). Extra arguments go to cmake's configure step.
+# Configures and builds softtune into build/ (Release; CMakePresets.json "dev"). Extra arguments go to
+# cmake's configure step.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build build -j"$(nproc)"
+cmake --preset dev "$@" >/dev/null
+cmake --build --preset dev -j"$(nproc)"

@@ -35,18 +35,5 @@ fuzz_one() {
 }
 
 echo "fuzz: ${#names[@]} harnesses for ${seconds} s each, ${parallel} at a time"
-failed=0
-running=0
-for name in "${names[@]}"; do
-  if ((running >= parallel)); then
-    wait -n || failed=1
-    running=$((running - 1))
-  fi
-  fuzz_one "$name" &
-  running=$((running + 1))
-done
-while ((running > 0)); do
-  wait -n || failed=1
-  running=$((running - 1))
-done
-exit "$failed"
+source scripts/parallel.sh
+run_parallel "$parallel" fuzz_one "${names[@]}"

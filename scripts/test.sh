@@ -10,6 +10,8 @@
 #   tsan         the server and render-pool tests built and run under TSan, build-tsan/
 # Any sanitizer report fails its stage. At the end (also after a failure) it prints each stage's wall
 # time and the load average when the stage ended.
+# `scripts/test.sh --quick`: the edit-and-test loop, only the build stage and the ctest tests labelled
+# unit (CMakePresets.json "quick"; labels: cmake/TestLabels.cmake), no setup.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -32,12 +34,24 @@ stage() {
   summary+=("$(printf '%-10s %5d s   load %s' "$current" $((SECONDS - started)) "$(cut -d' ' -f1-3 /proc/loadavg)")")
 }
 
-plain_ctest() { (cd build && ctest --output-on-failure -j"$(nproc)" --timeout 900); }
+
+quick=0
+case ${1:-} in
+  --quick) quick=1 ;;
+  "") ;;
+  *) echo "usage: scripts/test.sh [--quick]" >&2; exit 2 ;;
+esac
 
 started=$SECONDS
+if ((quick)); then
+  stage build scripts/build.sh
+  stage unit ctest --preset quick -j"$(nproc)"
+  summary+=("$(printf '%-10s %5d s' total $((SECONDS - started)))")
+  exit 0
+fi
 stage setup scripts/setup.sh
 stage build scripts/build.sh
-stage ctest plain_ctest
+stage ctest ctest --preset dev -j"$(nproc)"
 stage attacks scripts/test-attacks.sh
 stage asan-build scripts/build-asan.sh
 stage asan-ctest scripts/test-sanitizers.sh asan
