@@ -136,7 +136,7 @@ void analyze_methods(const TuneRequest& r, const StepModel& model, TuneResult& o
   }
 }
 
-// The plain export in each engine's units, then each engine's own step (SPEC.md 5): what it does with the
+// The plain export in each engine's units, then each engine's own step (docs/engines.md): what it does with the
 // export, and what makes it do the request.
 void export_to_engines(const TuneRequest& r, TuneResult& out) {
   out.stages.add(Stage::engine_export);
@@ -169,7 +169,7 @@ void export_to_engines(const TuneRequest& r, TuneResult& out) {
 TuneResult tune(const TuneRequest& r) {
   TuneResult out;
   out.stages.add(Stage::validate);
-  // Designer mapping (SPEC.md section 1): f = B / N or given; zeta from the level or given.
+  // Designer mapping (docs/math.md): f = B / N or given; zeta from the level or given.
   out.stages.add(Stage::designer_mapping);
   out.h = step_size(r.fps, r.substeps);
   const double asked_hz = requested_frequency_hz(r);

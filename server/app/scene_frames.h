@@ -1,6 +1,6 @@
 #pragma once
 // Scene snapshots -> render draw model: the glue between the Box2D scenes and the renderer, which know
-// nothing of each other (STYLE.md: dependencies point one way, server -> scenes/render -> core).
+// nothing of each other (docs/conventions.md, "Dependencies point one way").
 
 #include <string>
 #include <utility>

@@ -261,7 +261,7 @@ json analysis_json(const DiscreteAnalysis& a) {
   };
 }
 
-// Each modelled engine's report joins that engine's object (SPEC.md 5): what was assumed, what to type,
+// Each modelled engine's report joins that engine's object (docs/engines.md): what was assumed, what to type,
 // what the engine does with it, and what to type so it does what was asked.
 void add_engine_reports(json& engines_out, const std::vector<engines::EngineReport>& reports) {
   const auto models = engines::engine_models();

@@ -1,5 +1,5 @@
 // The tune flags (tune_flags.cpp): the help lists exactly the flags parsed, and the flags give the request
-// fields of the tune contract (SPEC.md), which the tune use case accepts: 12 frames at 60 fps is 5 Hz, and
+// fields of the tune contract (docs/api.md), which the tune use case accepts: 12 frames at 60 fps is 5 Hz, and
 // k = m omega^2.
 #include "cli/tune_flags.h"
 

@@ -1,5 +1,5 @@
 // docs/accuracy-and-stability.md's chain tables and its "blows up above f h = X" sentence are the code's
-// bisected limits (STYLE.md: a number the code defines is checked against the docs, never copied by hand).
+// bisected limits (docs/conventions.md, "Docs beside the code").
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -7,7 +7,7 @@
 using namespace softtune;
 
 TEST(Designer, FramesOnABasisGiveTheFrequency) {
-  // One period lasts N frames on a B fps clock: f = B / N (SPEC.md section 1).
+  // One period lasts N frames on a B fps clock: f = B / N (docs/math.md).
   EXPECT_DOUBLE_EQ(frequency_from_frames(12, 60), 5.0);
   EXPECT_DOUBLE_EQ(frequency_from_frames(60, 60), 1.0);
   EXPECT_DOUBLE_EQ(frequency_from_frames(12, 120), 10.0);

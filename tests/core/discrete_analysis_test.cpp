@@ -109,7 +109,7 @@ TEST(DiscreteAnalysis, AchievedFrequencyFromKnownPoles) {
 }
 
 TEST(DiscreteAnalysis, ImplicitEulerSlowsAndDampsAsTheSpecSays) {
-  // SPEC.md: asked 10 Hz free at 60 fps, implicit Euler gives 7.7 Hz (the visible, damped frequency)
+  // docs/math.md: asked 10 Hz free at 60 fps, implicit Euler gives 7.7 Hz (the visible, damped frequency)
   // with zeta 0.42; asked 15 Hz: 9.6 Hz, zeta 0.53.
   const DiscreteAnalysis ten = analyze_at(Method::soft, 2 * kPi * 10, 0.0, 1.0 / 60);
   EXPECT_NEAR(*ten.achieved_damped_frequency_hz, 7.7, 0.05);

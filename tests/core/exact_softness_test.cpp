@@ -20,7 +20,7 @@ void continuous_poles(double omega, double zeta, double h, cd& z1, cd& z2) {
   z2 = std::exp((-zeta * omega - omega * root) * h);
 }
 
-// Roots of implicit Euler's characteristic polynomial (m + c h + k h^2) z^2 - (2m + c h) z + m = 0 (SPEC.md).
+// Roots of implicit Euler's characteristic polynomial (m + c h + k h^2) z^2 - (2m + c h) z + m = 0 (docs/math.md, "Exact softness").
 void implicit_euler_poles(double m, double k, double c, double h, cd& z1, cd& z2) {
   const double a = m + c * h + k * h * h, b = -(2.0 * m + c * h);
   const cd disc = std::sqrt(cd(b * b - 4.0 * a * m, 0.0));
@@ -81,7 +81,7 @@ TEST(ExactSoftness, UndampedGivesTheCorrectedSymplecticSpring) {
 }
 
 TEST(ExactSoftness, GivesBackDampingWhereImplicitEulerOverDamps) {
-  // SPEC.md: c' may be negative while c' + h k' > 0 for zeta > 0.
+  // docs/math.md: c' may be negative while c' + h k' > 0 for zeta > 0.
   const double m = 1.0, h = 1.0 / 60, omega = 2.0 * std::numbers::pi * 10.0;
   const ExactSpring e = exact_spring(m, omega, 0.05, h);
   EXPECT_LT(e.spring.damping, 0.0);

@@ -1,4 +1,4 @@
-# The docs' own checks (issue 14, STYLE.md "Docs beside code"), run by ctest as docs.readme:
+# The docs' own checks (issue 14; docs/conventions.md, "Docs beside the code"), run by ctest as docs.readme:
 #   cmake -DSOURCE_DIR=<source root> -P tests/docs/readme_check.cmake
 # 1. README.md is a front door: under 150 lines (kMaxReadmeLines below).
 # 2. Every relative link in README.md and docs/*.md -- [text](target) and ![alt](target) -- names a file or
@@ -6,6 +6,9 @@
 #    its target page (GitHub's anchors: lower case, punctuation dropped, spaces as hyphens). Links in code
 #    spans are not links. Absolute URLs (http:, https:, mailto:) are not checked. Links to the engine pages
 #    (docs/engines/<engine>.md) are required like any other: the pages land with the engine rooms.
+# 3. Every .md file the sources, scripts, tests and pages cite by name (`docs/math.md`, "see testing.md")
+#    exists: relative to the repository root, to docs/, or to the citing file's folder. A comment citing a
+#    document outside the repository fails here (docs/conventions.md, "Docs beside the code").
 cmake_minimum_required(VERSION 3.25)
 if(NOT SOURCE_DIR)
   get_filename_component(SOURCE_DIR "${CMAKE_CURRENT_LIST_DIR}/../.." ABSOLUTE)
@@ -84,10 +87,45 @@ foreach(page IN LISTS pages)
   endforeach()
 endforeach()
 
+# 3. Cited .md files. Data (fuzz inputs, vendored and generated files) is not prose and is not read.
+set(cited_dirs core scene engines render server tests web fuzz scripts cmake bench presets docs .ci)
+set(cited 0)
+foreach(dir IN LISTS cited_dirs)
+  file(GLOB_RECURSE sources "${SOURCE_DIR}/${dir}/*")
+  list(FILTER sources INCLUDE REGEX "\\.(cpp|h|hpp|c|mjs|js|cmake|txt|sh|py|json|md|html|css|yml|yaml)$|/run$")
+  list(FILTER sources EXCLUDE REGEX "/(fuzz/(corpus|seeds|regressions)|web/vendor|node_modules)/")
+  list(APPEND all_sources ${sources})
+endforeach()
+file(GLOB top_files "${SOURCE_DIR}/*.md" "${SOURCE_DIR}/CMakeLists.txt" "${SOURCE_DIR}/*.json")
+list(APPEND all_sources ${top_files})
+foreach(source IN LISTS all_sources)
+  file(READ "${source}" text)
+  if(NOT text MATCHES "[A-Za-z0-9_]\\.md")
+    continue()
+  endif()
+  file(RELATIVE_PATH source_name "${SOURCE_DIR}" "${source}")
+  get_filename_component(source_dir "${source}" DIRECTORY)
+  # As above: ';', '[' and ']' would split or join CMake list elements.
+  string(REPLACE ";" " " text "${text}")
+  string(REPLACE "[" "<" text "${text}")
+  string(REPLACE "]" ">" text "${text}")
+  string(REGEX REPLACE "<[^<>\n]*>\\(" "(" text "${text}")  # a link's text is what it shows, not a citation
+  string(REGEX REPLACE "[a-z]+://[^ )\"'>`\n]*" "" text "${text}")  # URLs name other sites' files
+  string(REGEX MATCHALL "[A-Za-z0-9_][A-Za-z0-9_./-]*\\.md([^A-Za-z0-9_]|$)" names "${text}")
+  foreach(name IN LISTS names)
+    string(REGEX REPLACE "[^A-Za-z0-9_]$" "" name "${name}")
+    math(EXPR cited "${cited} + 1")
+    if(NOT EXISTS "${SOURCE_DIR}/${name}" AND NOT EXISTS "${SOURCE_DIR}/docs/${name}" AND NOT EXISTS "${source_dir}/${name}")
+      list(APPEND failures "${source_name} cites ${name}, which is not in the repository")
+    endif()
+  endforeach()
+endforeach()
+
 if(failures)
   foreach(f IN LISTS failures)
     message("docs check: ${f}")
   endforeach()
   message(FATAL_ERROR "docs check failed")
 endif()
-message(STATUS "docs check: README.md ${readme_lines} lines, ${checked} relative links in README.md and docs/*.md all resolve")
+message(STATUS "docs check: README.md ${readme_lines} lines, ${checked} relative links in README.md and docs/*.md "
+               "and ${cited} cited .md names in the sources all resolve")

@@ -152,7 +152,7 @@ TEST(CapabilityRoutes, AccuracyIsTheCliReportWithTheBox2DRow) {
   bool box2d_row = false;
   for (const json& row : doc["rows"]) {
     box2d_row = box2d_row || row["method"] == softtune::kBox2DRowName;
-    // Exact softness places the discrete poles on the asked ones (SPEC.md section 1): 2 Hz at any step.
+    // Exact softness places the discrete poles on the asked ones (docs/math.md): 2 Hz at any step.
     if (row["method"] == "soft_exact") {
       EXPECT_NEAR(row["achieved_frequency_hz"]["poles"].get<double>(), 2.0, 1e-9);
     }

@@ -41,7 +41,7 @@ TEST(HttpRoutes, HealthConforms) {
 TEST(HttpRoutes, TuneAnswersTheCliContractAndConforms) {
   TestServer s;
   // 10 Hz free at 60 fps, exact mode: the discrete poles sit on the continuous ones, so the achieved
-  // frequency is the asked one (the standard mapping would give ~7.7 Hz, SPEC.md section 1).
+  // frequency is the asked one (the standard mapping would give ~7.7 Hz, docs/math.md).
   auto r = s.client().Post("/api/v1/tune", R"({"frequency_hz": 10, "damping_ratio": 0.2, "effective_mass": 1,
                                                "fps": 60, "mode": "exact"})", kJson);
   ASSERT_TRUE(r);

@@ -71,7 +71,7 @@ TEST(OscillatorFrames, SubstepsShrinkTheErrorAtFirstOrder) {
 TEST(OscillatorFrames, ExactModeHasTheContinuousPoles) {
   // Samples of the analytic motion obey x[k+1] = S x[k] - P x[k-1] with the continuous poles
   // z = exp(s h): S = 2 exp(-zeta omega h) cos(omega_d h), P = exp(-2 zeta omega h). soft_exact matches
-  // those poles (SPEC.md section 1), so its frames obey the same recurrence; standard soft does not.
+  // those poles (docs/math.md), so its frames obey the same recurrence; standard soft does not.
   const double hz = 10.0, zeta = 0.05, fps = 60.0;
   const double omega = 2.0 * std::numbers::pi * hz, h = 1.0 / fps;
   const double S = 2.0 * std::exp(-zeta * omega * h) * std::cos(omega * std::sqrt(1.0 - zeta * zeta) * h);

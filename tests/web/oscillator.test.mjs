@@ -75,7 +75,7 @@ test('exact mode replay has the continuous poles: x[n+2] = S x[n+1] - P x[n]', (
   for (let n = 0; n + 2 < xs.length; ++n) {
     assert.ok(Math.abs(xs[n + 2] - (S * xs[n + 1] - P * xs[n])) < 1e-12, `n = ${n}`);
   }
-  // The standard soft constraint does not: it is slower and more damped (SPEC.md 1).
+  // The standard soft constraint does not: it is slower and more damped (docs/math.md).
   const std = s.methods.soft;
   const worst = Math.max(...std.slice(0, -2).map((x, n) => Math.abs(std[n + 2] - (S * std[n + 1] - P * x))));
   assert.ok(worst > 1e-3, `standard mode should miss the continuous poles, worst ${worst}`);

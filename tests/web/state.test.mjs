@@ -31,7 +31,7 @@ test('a query holds only what differs from the defaults and restores it', () => 
   assert.equal(toQuery(DEFAULTS, DEFAULTS), '');
   // An oscillation word sets the fine slider; unknown keys are ignored.
   assert.equal(fromQuery('osc=none&zeta=0.3&bogus=1', DEFAULTS, WORDS).zeta, '1');
-  // The words are the core's damping ratios (SPEC.md 1), read from the server, not copied into the page.
+  // The words are the core's damping ratios (docs/math.md), read from the server, not copied into the page.
   assert.deepEqual(WORDS, { free: 0, some: 0.5, none: 1 });
   assert.ok(!('bogus' in fromQuery('bogus=1', DEFAULTS)));
 });

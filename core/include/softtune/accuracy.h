@@ -1,5 +1,5 @@
 #pragma once
-// Work-precision report (SPEC.md section 1, "Error against run time"): each method at a range of step
+// Work-precision report (docs/accuracy-and-stability.md): each method at a range of step
 // rates and substep counts runs the standard scenario (released from rest displaced by x0 = 1), and each
 // run is scored against the analytic solution and timed. From the rows, the cheapest configuration that
 // meets an error budget is recommended.

@@ -1,5 +1,5 @@
 #pragma once
-// Designer units -> oscillator parameters (SPEC.md section 1; Catto GDC 2011, "3:3:1").
+// Designer units -> oscillator parameters (docs/math.md; Catto GDC 2011, "3:3:1").
 // This is the one place the designer mapping lives.
 
 namespace softtune {

@@ -1,5 +1,5 @@
 #pragma once
-// Diagnostics every layer returns as data (STYLE.md 5): the stages a computation ran, and the field a
+// Diagnostics every layer returns as data (docs/conventions.md, "Diagnostics are data"): the stages a computation ran, and the field a
 // request was refused for. Warnings have their own header (warnings.h). Small on purpose, so code that
 // only reports (the render pipeline, the scenes) need not include the tune header.
 

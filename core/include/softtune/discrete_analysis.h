@@ -1,7 +1,7 @@
 #pragma once
 // Discrete analysis of one integrator step [x1 v1]^T = A [x0 v0]^T: eigenvalues z of A, spectral radius,
 // stability, largest stable step, steps per period, and the frequency and damping ratio the discrete
-// motion actually has, read from s = ln(z) / h (SPEC.md section 1, "Stability analysis").
+// motion actually has, read from s = ln(z) / h (docs/math.md, "Discrete analysis").
 
 #include <Eigen/Core>
 #include <complex>

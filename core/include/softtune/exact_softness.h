@@ -1,6 +1,6 @@
 #pragma once
 // "Exact" softness: spring constants k', c' whose soft constraint (== implicit Euler) has the discrete
-// poles of the continuous oscillator, z = exp(s h) (SPEC.md section 1, "exact" mode).
+// poles of the continuous oscillator, z = exp(s h) (docs/math.md, "Exact softness").
 //
 // Implicit Euler on m x'' + c' x' + k' x = 0 has the characteristic polynomial
 //   (m + c'h + k'h^2) z^2 - (2m + c'h) z + m = 0.
@@ -11,7 +11,7 @@
 // Under-damped: z = e exp(+-i theta), e = exp(-zeta omega h), theta = omega_d h = omega sqrt(1 - zeta^2) h,
 //   (1 - z1)(1 - z2) = (1 - e)^2 + 2 e (1 - cos theta),  S - 2P = 2 e ((1 - e) - (1 - cos theta)).
 // Over-damped: z1,2 = exp(s1,2 h), s1,2 = -omega (zeta -+ sqrt(zeta^2 - 1)), both real.
-// Poles can be matched only below Nyquist, omega_d h < pi (SPEC.md); above it omega is clamped to
+// Poles can be matched only below Nyquist, omega_d h < pi (docs/math.md, "Exact softness"); above it omega is clamped to
 // omega_d h = (1 - kNyquistMargin) pi. At omega_d h = pi itself the two poles merge into a double pole
 // z = -exp(-zeta omega h); for zeta = 0 that is a Jordan block at -1 and the motion grows linearly
 // without bound (found by the stability sweep, stability_sweep.h).

@@ -40,7 +40,7 @@ StepModel make_step_model(double mass, double omega, double zeta, double h);
 Oscillator method_spring(Method m, const StepModel& model);
 
 /// One step of `m`. soft_exact with an unrepresentable gamma (zeta = 0) is a semi-implicit spring with
-/// k' (SPEC.md: "a symplectic spring with corrected stiffness"), which is the limit of its soft step.
+/// k' (docs/math.md: "a symplectic spring with corrected stiffness"), which is the limit of its soft step.
 State step(Method m, State s, const StepModel& model);
 
 }  // namespace softtune

@@ -1,5 +1,5 @@
 #pragma once
-// Spring constants and softness (SPEC.md section 1; Catto GDC 2011, "2:3:2" and "3:3:2").
+// Spring constants and softness (docs/math.md; Catto GDC 2011, "2:3:2" and "3:3:2").
 //
 // The soft constraint J v2 + (beta/h) C + gamma lambda = 0, solved with semi-implicit Euler, is
 // identical to implicit Euler on m x'' + c x' + k x = 0 when

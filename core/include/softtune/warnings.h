@@ -1,5 +1,5 @@
 #pragma once
-// Diagnostics returned as data (STYLE.md: MuJoCo's warnings are counted in the data, not printed).
+// Diagnostics returned as data (docs/conventions.md, "Diagnostics are data").
 
 #include <string>
 #include <string_view>

@@ -1,4 +1,4 @@
-// Box2D 2.4.1's model against the talk: one world step with one soft joint is implicit Euler (SPEC.md 1),
+// Box2D 2.4.1's model against the talk: one world step with one soft joint is implicit Euler (docs/math.md),
 // so its plain export predicts standard softness and its exact parameters are softtune's k', c'.
 #include "softtune/engines/box2d_v2_4.h"
 
@@ -25,7 +25,7 @@ TEST(Box2DV24Model, StepMapIsImplicitEuler) {
 }
 
 TEST(Box2DV24Model, StandardExportPredictsImplicitEulersPoles) {
-  // SPEC.md: asked 10 Hz free at 60 fps, standard softness gives 8.49 Hz natural with zeta 0.416.
+  // docs/math.md: asked 10 Hz free at 60 fps, standard softness gives 8.49 Hz natural with zeta 0.416.
   const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * std::numbers::pi * 10.0;
   const EngineReport r = kBox2DV24Model.report(target(10.0, 0.0, m, h, spring_constants(m, omega, 0.0)),
                                                default_settings(kBox2DV24Model));

@@ -58,7 +58,7 @@ TEST(JoltModel, StepMapIsDampedImplicitEulerPerCollisionStep) {
 }
 
 TEST(JoltModel, StandardExportWithoutDampingPredictsImplicitEuler) {
-  // SPEC.md: asked 10 Hz free at 60 fps, standard softness gives 8.49 Hz natural with zeta 0.416.
+  // docs/math.md: asked 10 Hz free at 60 fps, standard softness gives 8.49 Hz natural with zeta 0.416.
   const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * kPi * 10.0;
   const EngineReport r = kJoltModel.report(target(10.0, 0.0, m, h, spring_constants(m, omega, 0.0)), jolt_settings(1, 0.0));
   ASSERT_TRUE(r.predicted.frequency_hz);

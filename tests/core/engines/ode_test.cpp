@@ -118,7 +118,7 @@ TEST(OdeModel, WorldStepIsImplicitEulerOnTheUserGuidesSpring) {
 }
 
 TEST(OdeModel, StandardExportPredictsImplicitEulersPoles) {
-  // SPEC.md: asked 10 Hz free at 60 fps, standard softness gives 8.49 Hz natural with zeta 0.416.
+  // docs/math.md: asked 10 Hz free at 60 fps, standard softness gives 8.49 Hz natural with zeta 0.416.
   const double m = 1.0, h = 1.0 / 60.0, omega = 2.0 * std::numbers::pi * 10.0;
   const EngineReport r = kOdeModel.report(target(10.0, 0.0, m, h, spring_constants(m, omega, 0.0)),
                                           default_settings(kOdeModel));

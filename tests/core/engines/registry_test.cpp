@@ -1,5 +1,5 @@
 // The modelled engines (core/src/engines/registry.cpp): each found by name with the sources it was modelled from
-// and settings whose defaults lie in their ranges; the eight engines SPEC.md names, each once, snake_case.
+// and settings whose defaults lie in their ranges; the eight engines docs/engines.md names, each once, snake_case.
 #include "softtune/engines/engine_model.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Box2D 2.4.1 in the loop (SPEC.md 5): for each case softtune::tune() answers a TuneRequest, the box2d_v2_4
+// Box2D 2.4.1 in the loop (docs/engines.md): for each case softtune::tune() answers a TuneRequest, the box2d_v2_4
 // report's `parameters` and then its `exact` are typed into the real engine (engines/box2d_v2_4), the
 // trajectory is fitted (fit_response), and the fit is held against the report: measured within 1 % frequency
 // and 0.02 damping ratio of `predicted`, and, for `exact`, of the request. Where `exact` is empty the model

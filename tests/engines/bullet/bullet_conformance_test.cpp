@@ -1,4 +1,4 @@
-// Bullet 3.24 in process against its model (SPEC.md 5): for each case softtune::tune() answers, Bullet runs
+// Bullet 3.24 in process against its model (docs/engines.md): for each case softtune::tune() answers, Bullet runs
 // the report's `parameters` and then its `exact`, the trajectory is fitted (fit_response), and the fit is
 // held against `predicted` (1 % frequency, 0.02 damping ratio) and, for `exact`, against the request.
 // Where no fit can read the motion (it is gone within a few steps) or the model predicts growth, Bullet's

@@ -1,4 +1,4 @@
-// Real-engine conformance for the engines that run under node (SPEC.md 5, issue 15): for each case the real
+// Real-engine conformance for the engines that run under node (docs/engines.md, issue 15): for each case the real
 // `softtune tune --request -` answers, the engine's report (engines.<name>: settings, parameters, predicted,
 // exact, exact_predicted, warnings) is read, the oscillator is built in the real engine from those numbers
 // alone, stepped, and fitted (prony.mjs); the fit is held against `predicted` and, for `exact`, against the

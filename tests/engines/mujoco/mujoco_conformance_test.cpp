@@ -1,4 +1,4 @@
-// MuJoCo 2.2.2 in the loop (SPEC.md 5, issue 15): for each case softtune::tune() answers, the mujoco
+// MuJoCo 2.2.2 in the loop (docs/engines.md, issue 15): for each case softtune::tune() answers, the mujoco
 // report's `parameters` and then its `exact` are typed into the real engine (kMujocoEngine: MJCF in memory,
 // one soft joint or tendon equality), the trajectory is fitted (fit_response), and
 //   parameters: measured within 1 % frequency and 0.02 damping ratio of `predicted` (or, predicted

@@ -1,4 +1,4 @@
-// ODE 0.16 in the loop (SPEC.md 5): for each case softtune::tune() answers, the ODE report's `parameters` and
+// ODE 0.16 in the loop (docs/engines.md): for each case softtune::tune() answers, the ODE report's `parameters` and
 // then its `exact` are typed into the real engine (engines/ode), the trajectory is fitted (fit_response), and
 // the fit is held against the model: within 1 % frequency and 0.02 damping ratio of `predicted`, and for
 // `exact` also of the request. Grid: f/fps 0.02 to 0.3 at 60 fps, zeta 0 to 2, mass 1e-3 to 1e3, substeps 1

@@ -1,5 +1,5 @@
 #pragma once
-// A real engine's step, modelled (SPEC.md section 5): how one engine turns the numbers a user types into the
+// A real engine's step, modelled (docs/engines.md): how one engine turns the numbers a user types into the
 // motion of one soft 1-D constraint on an effective mass, with the engine's own defaults and the settings a
 // user may change. One file per engine (core/src/engines/<engine>.cpp) cites, at its top, the engine version
 // and the files and functions it mirrors; each step of the model names the engine line it follows.

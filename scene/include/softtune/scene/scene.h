@@ -1,6 +1,6 @@
 #pragma once
 // A scene: bodies, soft joints tuned in designer units, a world, a camera, probes and the expectations its
-// preset test checks. Plain settings with a default on every member (STYLE.md, Jolt's XxxSettings); the
+// preset test checks. Plain settings with a default on every member (docs/conventions.md, "Settings are plain structs"); the
 // runtime state lives in the runner. Nothing here knows about JSON or Box2D.
 
 #include <Eigen/Core>
