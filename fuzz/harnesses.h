@@ -1,6 +1,6 @@
 #pragma once
 // The body of every libFuzzer harness, shared with tests/security/fuzz_regressions_test.cpp, which
-// replays the committed corpora and every crash found (fuzz/regressions/<harness>/) in the plain build.
+// replays the seeds (fuzz/seeds/<harness>/) and every crash found (fuzz/regressions/<harness>/) in the plain build.
 // Each takes any byte string; bad input must end as a Problem, and an answer must never hold a
 // non-finite number (abort: libFuzzer records a crash, the test run fails).
 #include <nlohmann/json.hpp>

@@ -1,19 +1,21 @@
 #!/usr/bin/env bash
-# Each libFuzzer harness for a short bounded time (default 30 s, SOFTTUNE_FUZZ_SECONDS overrides; the test command keeps within its 30 min) from
-# the committed corpus in fuzz/corpus/<name>, after replaying fuzz/regressions/<name>; two harnesses at a
-# time, one per core (each libFuzzer process is single-threaded). New inputs go to a scratch directory,
-# so the committed corpus stays as it is. Called by scripts/test.sh.
+# Each libFuzzer harness for a short bounded time (default 30 s, SOFTTUNE_FUZZ_SECONDS overrides; the test
+# command keeps within its budget) after replaying fuzz/regressions/<name>: it starts from the seeds in
+# fuzz/seeds/<name> and, where one exists, the grown corpus in the cache (scripts/fuzz-dirs.sh). Two
+# harnesses at a time, one per core (each libFuzzer process is single-threaded). New inputs go to a scratch
+# directory: neither the seeds nor the cache change. Called by scripts/test.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/fuzz-dirs.sh
+source scripts/parallel.sh
 seconds=${SOFTTUNE_FUZZ_SECONDS:-30}
 parallel=${SOFTTUNE_JOBS:-2}
-names=(tune_request request_decode simulate_request accuracy_request preset_load)
 scripts/build-fuzz.sh
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
 # Every crash found before and fixed must stay fixed: replay them all before fuzzing anything.
-for name in "${names[@]}"; do
+for name in "${fuzz_names[@]}"; do
   if compgen -G "fuzz/regressions/$name/*" >/dev/null; then
     build-asan/${name}_fuzz -runs=0 fuzz/regressions/$name/* 2>"$scratch/$name.replay.log" ||
       { cat "$scratch/$name.replay.log"; exit 1; }
@@ -23,9 +25,11 @@ done
 # One harness: fuzz it, then print its last status line (or the report when it found something).
 fuzz_one() {
   local name=$1
+  local inputs=("fuzz/seeds/$name")
+  [[ -d $fuzz_cache/$name ]] && inputs+=("$fuzz_cache/$name")
   mkdir -p "$scratch/$name"
   if build-asan/${name}_fuzz -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -max_len=16384 \
-    -artifact_prefix="$scratch/$name-" "$scratch/$name" "fuzz/corpus/$name" 2>"$scratch/$name.log"; then
+    -artifact_prefix="$scratch/$name-" "$scratch/$name" "${inputs[@]}" 2>"$scratch/$name.log"; then
     echo "fuzz: $name: $(grep -E "^(Done|#[0-9]+ +DONE)" "$scratch/$name.log" | tail -n1)"
   else
     echo "fuzz: $name FAILED"
@@ -34,6 +38,5 @@ fuzz_one() {
   fi
 }
 
-echo "fuzz: ${#names[@]} harnesses for ${seconds} s each, ${parallel} at a time"
-source scripts/parallel.sh
-run_parallel "$parallel" fuzz_one "${names[@]}"
+echo "fuzz: ${#fuzz_names[@]} harnesses for ${seconds} s each, ${parallel} at a time"
+run_parallel "$parallel" fuzz_one "${fuzz_names[@]}"

@@ -1,6 +1,7 @@
-// Replays every committed fuzz input in the plain (and sanitizer) builds: the seed corpora
-// (fuzz/corpus/<harness>) and each crash the fuzzers found, kept once fixed (fuzz/regressions/<harness>),
-// through the same harness bodies libFuzzer runs (fuzz/harnesses.h).
+// Replays every committed fuzz input in the plain (and sanitizer) builds: the seeds (fuzz/seeds/<harness>)
+// and each crash the fuzzers found, kept once fixed (fuzz/regressions/<harness>), through the same harness
+// bodies libFuzzer runs (fuzz/harnesses.h). The grown corpus lives outside the repository
+// (scripts/fuzz-dirs.sh) and is not replayed here.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -17,7 +18,7 @@ namespace fs = std::filesystem;
 
 std::size_t replay(const std::string& harness, const std::function<void(std::string_view)>& body) {
   std::size_t n = 0;
-  for (const char* kind : {"corpus", "regressions"}) {
+  for (const char* kind : {"seeds", "regressions"}) {
     const fs::path dir = fs::path(SOFTTUNE_SOURCE_DIR) / "fuzz" / kind / harness;
     if (!fs::is_directory(dir)) continue;
     for (const auto& entry : fs::directory_iterator(dir)) {
