@@ -34,19 +34,45 @@ export function writeForm(form, state) {
   }
 }
 
-/// The query string for `state`: the values that differ from `defaults`, in a stable order.
+/// The URL's one form (docs/page.md, "URL state"): each control under its own name, only values that
+/// differ from `defaults`, in a stable order. A fine damping ratio is `zeta=0.25` alone (no `osc`: a
+/// word's ratio follows from the word, so `zeta` is written only without one); an empty value (an inertia
+/// left empty, a box unticked) is `none`, so no key is ever empty; keys that are not controls with a
+/// default (the identify drop's engine) are not written.
 export function toQuery(state, defaults) {
   const q = new URLSearchParams();
-  for (const [k, v] of Object.entries(state)) if (v !== defaults[k]) q.set(k, v);
+  for (const [k, v] of Object.entries(state)) {
+    if (!(k in defaults)) continue;
+    if (k === 'osc' && v === '') continue;
+    if (k === 'zeta' && state.osc !== '') continue;
+    if (v === defaults[k] && !(k === 'zeta' && defaults.osc !== '')) continue;
+    q.set(k, v === '' ? EMPTY : v);
+  }
   return q.toString();
 }
 
+/// How an empty value is written in a link (never an empty key).
+const EMPTY = 'none';
+
+/// The request's field names a link may use instead of the controls' (`?damping_ratio=0.25`,
+/// `?response_frames=24`); the page writes the controls' names.
+export const QUERY_ALIASES = { response_frames: 'frames', basis_fps: 'basis', oscillation: 'osc', damping_ratio: 'zeta',
+  effective_mass: 'mass' };
+
 /// The state a query string describes, on top of `defaults`; unknown keys are ignored. `words` is the
-/// damping ratio of each oscillation word as the server documents it (api.js oscillationWords()).
+/// damping ratio of each oscillation word as the server documents it (api.js oscillationWords()). A link
+/// carries an oscillation word (`osc=none`, which sets the fine slider) or a fine ratio (`zeta=0.25`,
+/// which means no word); with both, the word wins. `none` is an empty value except as the word.
 export function fromQuery(search, defaults, words = {}) {
   const state = { ...defaults };
-  for (const [k, v] of new URLSearchParams(search)) if (k in defaults) state[k] = v;
-  // A link carries either an oscillation word or a fine damping ratio; the word wins and sets the slider.
+  const given = new Set();
+  for (const [key, v] of new URLSearchParams(search)) {
+    const k = QUERY_ALIASES[key] ?? key;
+    if (!(k in defaults)) continue;
+    state[k] = v === EMPTY && k !== 'osc' ? '' : v;
+    given.add(k);
+  }
+  if (given.has('zeta') && !given.has('osc')) state.osc = '';
   if (state.osc in words) state.zeta = String(words[state.osc]);
   return state;
 }
@@ -148,6 +174,18 @@ export function stateFromScene(scene, words = {}) {
 /// The size the page asks previews in, and the cap on frames (render/include/softtune/render/frame_pipeline.h).
 export const PREVIEW_SIZE = '480x270';
 export const MAX_PREVIEW_FRAMES = 600;
+/// The frame's text is drawn max(8, round(0.036 H)) px tall in an H px tall frame (render/src/tessellate.cpp
+/// stroke_sizes, text_px), and reads at that times (shown width / frame width). PREVIEW_SIZE keeps it at
+/// 12 px or more from 576 px shown; a narrower view (a phone) asks a frame as wide as it is shown and
+/// PHONE_PREVIEW_HEIGHT tall (text 12 px at 1:1), so no text in it reads under 12 px.
+export const PHONE_PREVIEW_HEIGHT = 340;
+export const MIN_SHOWN_TEXT_PX = 12;
+export function previewSize(shownPx) {
+  const [w, h] = PREVIEW_SIZE.split('x').map(Number);
+  if (!(shownPx > 0) || (Math.round(0.036 * h) * shownPx) / w >= MIN_SHOWN_TEXT_PX) return PREVIEW_SIZE;
+  return `${Math.max(160, Math.floor(shownPx))}x${PHONE_PREVIEW_HEIGHT}`;
+}
+
 /// Frames a browser shows per second at most: a scene is sampled at up to this rate for real-time playback.
 export const PREVIEW_RATE = 30;
 
@@ -160,9 +198,9 @@ export function previewFrames(durationS, rate) {
 /// duration at up to PREVIEW_RATE per second. The oscillator (a custom body, or the oscillator preset): the
 /// tune fields with the effective mass the tune answer computed, one frame per game frame over at least
 /// 1 s and three periods (`exact_motion.duration_s`). `wait: false` answers at once, so the progress bar
-/// can follow the render.
-export function previewRequest(state, tune, scene) {
-  const settings = { size: PREVIEW_SIZE, wait: false };
+/// can follow the render. `size`: previewSize() of the width the preview is shown at.
+export function previewRequest(state, tune, scene, size = PREVIEW_SIZE) {
+  const settings = { size, wait: false };
   if (state.preset && state.preset !== 'oscillator') {
     const duration = scene?.world?.duration_s ?? 2;
     return { ...presetRequest(state, scene), frames: previewFrames(duration, Math.min(PREVIEW_RATE, num(state.fps) || PREVIEW_RATE)), ...settings };

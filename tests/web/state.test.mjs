@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { fromQuery, presetRequest, previewFrames, previewRequest, stateFromScene, toQuery, tuneRequest } from '../../web/state.js';
+import { fromQuery, presetRequest, previewFrames, previewRequest, previewSize, stateFromScene, toQuery, tuneRequest } from '../../web/state.js';
 
 const softtune = process.env.SOFTTUNE_BIN ?? 'build/softtune';
 const presets = new URL('../../presets', import.meta.url).pathname;
@@ -26,14 +26,44 @@ const DEFAULTS = {
 test('a query holds only what differs from the defaults and restores it', () => {
   const state = { ...DEFAULTS, frames: '24', osc: '', zeta: '0.25', mode: 'exact' };
   const query = toQuery(state, DEFAULTS);
-  assert.equal(query, 'frames=24&osc=&zeta=0.25&mode=exact');
+  assert.equal(query, 'frames=24&zeta=0.25&mode=exact');
   assert.deepEqual(fromQuery(query, DEFAULTS, WORDS), state);
+  // A link written before this form (an empty osc) still reads the same.
+  assert.deepEqual(fromQuery('frames=24&osc=&zeta=0.25&mode=exact', DEFAULTS, WORDS), state);
   assert.equal(toQuery(DEFAULTS, DEFAULTS), '');
   // An oscillation word sets the fine slider; unknown keys are ignored.
   assert.equal(fromQuery('osc=none&zeta=0.3&bogus=1', DEFAULTS, WORDS).zeta, '1');
   // The words are the core's damping ratios (SPEC.md 1), read from the server, not copied into the page.
   assert.deepEqual(WORDS, { free: 0, some: 0.5, none: 1 });
   assert.ok(!('bogus' in fromQuery('bogus=1', DEFAULTS)));
+});
+
+test('the documented short forms are read, and no key is ever written empty', () => {
+  // ?zeta=0.25 alone is a fine damping ratio: no oscillation word (the default "some" must not win).
+  const fine = fromQuery('zeta=0.25', DEFAULTS, WORDS);
+  assert.equal(fine.osc, '');
+  assert.equal(fine.zeta, '0.25');
+  assert.equal(tuneRequest(fine).damping_ratio, 0.25);
+  assert.equal(tuneRequest(fine).oscillation, undefined);
+  // A fine ratio equal to the default word's ratio is still a fine ratio, and says so.
+  assert.equal(toQuery({ ...DEFAULTS, osc: '', zeta: '0.5' }, DEFAULTS), 'zeta=0.5');
+  assert.equal(fromQuery('zeta=0.5', DEFAULTS, WORDS).osc, '');
+  // A word's ratio follows from the word: never written beside it.
+  assert.equal(toQuery({ ...DEFAULTS, osc: 'none', zeta: '1' }, DEFAULTS), 'osc=none');
+  // The request's own field names are read as the controls'.
+  assert.deepEqual(fromQuery('response_frames=24&damping_ratio=0.3&basis_fps=30&effective_mass=2', DEFAULTS, WORDS),
+    { ...DEFAULTS, frames: '24', osc: '', zeta: '0.3', basis: '30', mass: '2' });
+  // Empty values (an inertia left empty, a box unticked) are "none", and read back as empty.
+  const emptied = { ...DEFAULTS, body: 'constraint', a_static: '', b_inertia: '' };
+  const query = toQuery(emptied, DEFAULTS);
+  assert.equal(query, 'body=constraint&a_static=none&b_inertia=none');
+  assert.deepEqual(fromQuery(query, DEFAULTS, WORDS), emptied);
+  assert.equal(fromQuery('osc=none', DEFAULTS, WORDS).osc, 'none', '"none" is a word for the oscillation');
+  // Keys without a default (the identify drop's engine picker) are not written: no `identify-engine=`.
+  assert.equal(toQuery({ ...DEFAULTS, 'identify-engine': '', frames: '30' }, DEFAULTS), 'frames=30');
+  for (const q of [query, toQuery({ ...DEFAULTS, osc: '', zeta: '0.25' }, DEFAULTS)]) {
+    for (const [k, v] of new URLSearchParams(q)) assert.notEqual(v, '', `empty key ${k} in ${q}`);
+  }
 });
 
 test('the tune request of the default state is what docs/api.md documents, and the codec accepts it', () => {
@@ -128,4 +158,15 @@ test('a preview covers its whole duration at up to the playback rate, within the
   assert.equal(previewFrames(2, 30), 61);
   assert.equal(previewFrames(100, 60), 600);
   assert.equal(previewFrames(0, 30), 2);
+});
+
+test('a preview shown narrow asks a frame whose text reads at 12 px or more as shown', () => {
+  // The renderer draws text max(8, round(0.036 H)) px tall in an H px frame (render/src/tessellate.cpp).
+  for (const shown of [280, 330, 358, 480, 575, 576, 700, 1000]) {
+    const [w, h] = previewSize(shown).split('x').map(Number);
+    const textShown = (Math.max(8, Math.round(0.036 * h)) * shown) / w;
+    assert.ok(textShown >= 12, `${shown} px shown: ${previewSize(shown)}, text ${textShown.toFixed(1)} px`);
+  }
+  assert.equal(previewSize(700), '480x270', 'a desktop keeps the shared size (and its cache)');
+  assert.equal(previewSize(0), '480x270', 'hidden: the shared size');
 });
