@@ -27,7 +27,7 @@ import { probeUnit, showJoints, showModalTargets, showProbes, tunedJoints } from
 import { identifyOverlay, installIdentify, showIdentified } from './identify.js';
 import { showModes } from './modes.js';
 import {
-  fromQuery, presetRequest, previewRequest, previewSize, readForm, stateFromScene, toQuery, tuneRequest, tuningFields,
+  fromQuery, presetRequest, previewRequest, readForm, stateFromScene, toQuery, tuneRequest, tuningFields,
   writeForm,
 } from './state.js';
 
@@ -559,7 +559,7 @@ async function runPreview(state, tune) {
     note.textContent = unavailable('The rendered preview');
     return;
   }
-  const request = previewRequest(state, tune, presetScene, previewSize($('preview-panel').clientWidth));
+  const request = previewRequest(state, tune, presetScene);
   const text = JSON.stringify(request);
   // Asked already for this input (a preset's preview starts with the change, then the tune answer asks).
   const generation = generations.current;

@@ -174,18 +174,6 @@ export function stateFromScene(scene, words = {}) {
 /// The size the page asks previews in, and the cap on frames (render/include/softtune/render/frame_pipeline.h).
 export const PREVIEW_SIZE = '480x270';
 export const MAX_PREVIEW_FRAMES = 600;
-/// The frame's text is drawn max(8, round(0.036 H)) px tall in an H px tall frame (render/src/tessellate.cpp
-/// stroke_sizes, text_px), and reads at that times (shown width / frame width). PREVIEW_SIZE keeps it at
-/// 12 px or more from 576 px shown; a narrower view (a phone) asks a frame as wide as it is shown and
-/// PHONE_PREVIEW_HEIGHT tall (text 12 px at 1:1), so no text in it reads under 12 px.
-export const PHONE_PREVIEW_HEIGHT = 340;
-export const MIN_SHOWN_TEXT_PX = 12;
-export function previewSize(shownPx) {
-  const [w, h] = PREVIEW_SIZE.split('x').map(Number);
-  if (!(shownPx > 0) || (Math.round(0.036 * h) * shownPx) / w >= MIN_SHOWN_TEXT_PX) return PREVIEW_SIZE;
-  return `${Math.max(160, Math.floor(shownPx))}x${PHONE_PREVIEW_HEIGHT}`;
-}
-
 /// Frames a browser shows per second at most: a scene is sampled at up to this rate for real-time playback.
 export const PREVIEW_RATE = 30;
 
@@ -198,9 +186,9 @@ export function previewFrames(durationS, rate) {
 /// duration at up to PREVIEW_RATE per second. The oscillator (a custom body, or the oscillator preset): the
 /// tune fields with the effective mass the tune answer computed, one frame per game frame over at least
 /// 1 s and three periods (`exact_motion.duration_s`). `wait: false` answers at once, so the progress bar
-/// can follow the render. `size`: previewSize() of the width the preview is shown at.
-export function previewRequest(state, tune, scene, size = PREVIEW_SIZE) {
-  const settings = { size, wait: false };
+/// can follow the render.
+export function previewRequest(state, tune, scene) {
+  const settings = { size: PREVIEW_SIZE, wait: false };
   if (state.preset && state.preset !== 'oscillator') {
     const duration = scene?.world?.duration_s ?? 2;
     return { ...presetRequest(state, scene), frames: previewFrames(duration, Math.min(PREVIEW_RATE, num(state.fps) || PREVIEW_RATE)), ...settings };

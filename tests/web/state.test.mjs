@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { fromQuery, presetRequest, previewFrames, previewRequest, previewSize, stateFromScene, toQuery, tuneRequest } from '../../web/state.js';
+import { fromQuery, presetRequest, previewFrames, previewRequest, stateFromScene, toQuery, tuneRequest } from '../../web/state.js';
 
 const softtune = process.env.SOFTTUNE_BIN ?? 'build/softtune';
 const presets = new URL('../../presets', import.meta.url).pathname;
@@ -158,15 +158,4 @@ test('a preview covers its whole duration at up to the playback rate, within the
   assert.equal(previewFrames(2, 30), 61);
   assert.equal(previewFrames(100, 60), 600);
   assert.equal(previewFrames(0, 30), 2);
-});
-
-test('a preview shown narrow asks a frame whose text reads at 12 px or more as shown', () => {
-  // The renderer draws text max(8, round(0.036 H)) px tall in an H px frame (render/src/tessellate.cpp).
-  for (const shown of [280, 330, 358, 480, 575, 576, 700, 1000]) {
-    const [w, h] = previewSize(shown).split('x').map(Number);
-    const textShown = (Math.max(8, Math.round(0.036 * h)) * shown) / w;
-    assert.ok(textShown >= 12, `${shown} px shown: ${previewSize(shown)}, text ${textShown.toFixed(1)} px`);
-  }
-  assert.equal(previewSize(700), '480x270', 'a desktop keeps the shared size (and its cache)');
-  assert.equal(previewSize(0), '480x270', 'hidden: the shared size');
 });
