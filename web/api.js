@@ -92,13 +92,12 @@ export class Latest {
       throw e;
     }
   }
-}
 
-/// Calls `fn` once `ms` have passed without another call.
-export function debounce(fn, ms) {
-  let timer = 0;
-  return (...args) => {
-    clearTimeout(timer);
-    timer = setTimeout(() => fn(...args), ms);
-  };
+  /// Makes the call in flight stale (and aborts it) without starting another: the input it was for was
+  /// replaced by input the page refuses.
+  cancel() {
+    ++this.#seq;
+    this.#controller?.abort();
+    this.#controller = null;
+  }
 }

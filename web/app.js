@@ -7,12 +7,17 @@
 import { Comparison } from './ab.js';
 import { buildBodies } from './bodies.js';
 import { drawConstraint, showMassTerms } from './constraint_view.js';
-import { ApiError, Latest, callJson, debounce, hasRoute, loadRoutes, oscillationWords } from './api.js';
+import { ApiError, Latest, callJson, hasRoute, loadRoutes, oscillationWords } from './api.js';
+import { Debounced, GESTURE_WAIT_MS, InputGenerations, waitFor } from './input_flow.js';
+import { askedResponse, drawLive, feel, feelWords, liveCurve } from './live_curve.js';
+import { clearPending, holdSummary, markPending, showOffBy } from './summary_bar.js';
+import { presetWords } from './preset_words.js';
 import { download, exportName, stateFromDocument } from './exchange.js';
 import { designerMessage, inputProblems } from './input_check.js';
 import { responseSeries } from './oscillator.js';
 import { drawLanes, oscillatorLanes } from './oscillator_lanes.js';
-import { drawError, drawResponse, drawSimulation, drawWorkPrecision, showUnavailable } from './plots.js';
+import { chartOf, drawError, drawResponse, drawSimulation, drawWorkPrecision, showUnavailable } from './plots.js';
+import { dragToSeek, placeCursor } from './time_cursor.js';
 import { fetchPresetScene, fillJointPicker, fillPresetList, isBox2dScene } from './presets.js';
 import { PreviewPlayer } from './preview.js';
 import { showEngines, watchEngineValues } from './engine_table.js';
@@ -34,11 +39,49 @@ const player = new PreviewPlayer($('preview-panel'));
 const comparison = new Comparison(document.querySelector('main'), $('preview'), $('preview-a'));
 let lastSeries = null;  // the response series of the answer shown, for pinning it as A
 let lanes = [];         // a preset's 1-D oscillators, drawn beside its preview at the same scene time
+const previewTime = () => Number($('preview').dataset.frame ?? 0) * (Number($('preview').dataset.frameSeconds) || 0);
+// The one time cursor: the preview's frame; every plot shows it and a drag on a plot moves it.
+const TIMED_PLOTS = ['plot-response', 'plot-error', 'plot-simulation'];
+function placeCursors() {
+  for (const id of TIMED_PLOTS) placeCursor($(id), chartOf($(id)), previewTime());
+}
+for (const id of TIMED_PLOTS) dragToSeek($(id), chartOf, (t) => player.seek(t));
 new MutationObserver(() => {
+  drawAtSlider();
+  placeCursors();
   if (lanes.length === 0) return;
-  const img = $('preview');
-  drawLanes($('lanes'), lanes, Number(img.dataset.frame ?? 0) * (Number(img.dataset.frameSeconds) || 0));
+  drawLanes($('lanes'), lanes, previewTime());
 }).observe($('preview'), { attributes: true, attributeFilter: ['data-frame'] });
+
+// ---- the response at the slider (web/live_curve.js) -------------------------------------------------
+
+// The curve shown beside the sliders: computed from the controls on every input event ('input'), then
+// the tune answer's own replay ('answer'); the dot sits at the preview's time.
+let live = { curve: null, source: '', fps: 60, ask: '' };
+let liveDraws = 0;
+
+/// The curve of the controls as they are now, before any answer (kept as it was when a field is refused,
+/// and when the controls still ask what the curve shows: the answer's own replay then stays).
+function liveFromControls() {
+  const ask = askedResponse(readForm(form), words);
+  if (!ask) {
+    $('live-curve').dataset.source = 'refused';
+    return;
+  }
+  const key = JSON.stringify(ask);
+  if (key === live.ask) return;
+  live = { curve: liveCurve(ask), source: 'input', fps: ask.fps, ask: key };
+  drawAtSlider();
+}
+
+function drawAtSlider() {
+  const canvas = $('live-curve');
+  if (!live.curve) return;
+  drawLive(canvas, live.curve, { ghost: comparison.pinned?.series ?? null, cursorS: previewTime() });
+  canvas.dataset.source = live.source;
+  canvas.dataset.drawn = String(++liveDraws);  // for tests and the latency bench: a redraw happened
+  $('live-words').textContent = feelWords(feel(live.curve, live.fps));
+}
 
 buildBodies($('bodies'), $('body-template'));
 
@@ -65,21 +108,9 @@ function setError(text) {
   busy(0);
 }
 
-/// debounce() whose waiting counts as pending work, so body[data-pending] = 0 means truly idle: nothing
-/// scheduled and nothing in flight.
-function trackedDebounce(fn, ms) {
-  let armed = false;
-  const run = debounce((...args) => {
-    armed = false;
-    fn(...args);  // starts its requests (tracked) before the wait is released below
-    busy(-1);
-  }, ms);
-  return (...args) => {
-    if (!armed) busy(+1);
-    armed = true;
-    run(...args);
-  };
-}
+/// A debounced call whose waiting counts as pending work, so body[data-pending] = 0 means truly idle:
+/// nothing scheduled and nothing in flight.
+const trackedWait = (fn) => new Debounced(fn, { onArm: () => busy(+1), onRelease: () => busy(-1) });
 
 async function tracked(promise) {
   busy(+1);
@@ -114,20 +145,28 @@ function syncControls() {
   $('zeta-out').textContent = Number(state.zeta).toFixed(2);
   const f = Number(state.basis) / Number(state.frames);
   $('frames-hz').textContent = state.basis !== '' && Number.isFinite(f) ? `= ${fmt(f)} Hz (${state.frames} frames at ${state.basis} fps)` : '';
+  liveFromControls();  // the response at the slider follows every event, before any answer
 }
 
 // One history entry per gesture: the first input after a committed change opens an entry, later inputs
-// of the same drag or typing replace it, and the change event closes it.
+// of the same drag or typing replace it, and the change event closes it. Only accepted input gets here
+// (onInput), so no entry holds a half-typed number; `settling` replaces the current entry (what the page
+// fills in itself once a preset's scene is known belongs to the pick that caused it).
 let entryOpen = false;
-function updateUrl(commit) {
+function updateUrl(commit, settling = false) {
   const query = toQuery(readForm(form), urlDefaults);
   const url = query ? `?${query}` : location.pathname;
   if (`${location.pathname}${location.search}` !== (query ? `${location.pathname}?${query}` : location.pathname)) {
-    if (entryOpen) history.replaceState(null, '', url);
+    if (entryOpen || settling) history.replaceState(null, '', url);
     else history.pushState(null, '', url);
   }
-  entryOpen = !commit;
+  if (!settling) entryOpen = !commit;
 }
+
+// Accepted input, by generation (web/input_flow.js): an answer is shown only if no input came after the
+// request it answers, so a late answer never clears a refusal or overwrites newer numbers.
+const generations = new InputGenerations();
+let acceptedState = '';  // the form as last accepted: an event that changes nothing sends nothing
 
 function onInput(event) {
   const t = event.target;
@@ -141,9 +180,31 @@ function onInput(event) {
     return;
   }
   syncControls();
+  if (inputProblems(form).length > 0) {
+    // Refused: nothing is sent, nothing scheduled or in flight may show, and the address keeps the last
+    // settled state (no history entry for a half-typed number).
+    refuse();
+    return;
+  }
+  const state = readForm(form);
+  const text = JSON.stringify(state);
+  const changed = text !== acceptedState || generations.refused;
   updateUrl(event.type === 'change');
-  scheduleTune();
-  if (box2dPreset(readForm(form))) schedulePreview();
+  if (!changed) return;  // a slider's change event after its input events: asked already
+  acceptedState = text;
+  generations.accept();
+  const ms = waitFor(event);
+  scheduleTune(ms);
+  if (box2dPreset(state)) schedulePreview(ms + PREVIEW_AFTER_TUNE_MS);
+}
+
+/// Input the page refuses: every wait and every request in flight is dropped, and the fields say why.
+function refuse() {
+  generations.refuse();
+  for (const wait of [tuneWait, slowWait, previewWait]) wait.cancel();
+  for (const channel of Object.values(channels)) channel.cancel();
+  lastPreview = '';
+  refuseInput();
 }
 
 // ---- errors next to their fields ------------------------------------------------------------------
@@ -209,15 +270,19 @@ function refuseInput() {
 // ---- tune -----------------------------------------------------------------------------------------
 
 // Short waits: a drag sends few requests (a newer one aborts the older), yet the numbers follow at once.
-const scheduleTune = trackedDebounce(runTune, 30);
+const tuneWait = trackedWait(() => runTune());
+const scheduleTune = (ms = GESTURE_WAIT_MS) => tuneWait.call(ms);
 let tuneShown = 0;  // answers shown so far: a newer one drops the older one's plots
 
 async function runTune() {
   if (refuseInput()) return;
+  const generation = generations.current;
   let state = readForm(form);
+  acceptedState = JSON.stringify(state);
   if (box2dPreset(state) && presetJoints === null) {
     // The joints' effective masses come from the preset's bodies: the first simulation reports them.
     await runSimulate(state, null);
+    if (!generations.belongs(generation)) return;
     state = readForm(form);
   }
   const joint = presetJoints?.find((j) => j.id === state.joint);
@@ -231,12 +296,13 @@ async function runTune() {
     tune = await tracked(channels.tune.run((signal) => callJson('POST', 'api/v1/tune', request, signal)));
   } catch (e) {
     if (!(e instanceof ApiError)) throw e;
+    if (!generations.belongs(generation)) return;
     clearErrors();
     const message = showProblem(e);
     setError(e.status === 0 ? e.message : `Not updated: ${message}`);
     return;
   }
-  if (tune === Latest.stale) return;
+  if (tune === Latest.stale || !generations.belongs(generation)) return;
   clearErrors();
   setError('');
   // The slider follows the word the server mapped (when the page could not read the mapping itself).
@@ -244,9 +310,20 @@ async function runTune() {
     $('zeta').value = String(tune.requested.damping_ratio);
     $('zeta-out').textContent = tune.requested.damping_ratio.toFixed(2);
   }
-  window.softtune = { request, tune };
+  // Merged, not replaced: the identify answer (identify.js) lives here too, and this tune (the redraw its
+  // round asks for) must not wipe it while a reader of the round's marker is about to read it.
+  window.softtune = { ...window.softtune, request, tune };
   results.classList.remove('stale');
+  // A preset tuned by its modes shows its scene's solve in the bar: until that answer, the last one stays,
+  // marked pending (the tune answer describes one spring on its own mass).
+  const modal = modalTuned(state);
+  const held = modal ? holdSummary($('summary')) : null;
   showSummary($('summary'), tune, joint ? `joint ${joint.id}` : '');
+  if (modal) markPending($('summary'), held);
+  else {
+    clearPending($('summary'));
+    showOffBy($('summary'), tune.requested, tune.achieved);
+  }
   showNumbers(results, tune);
   comparison.showNumbers();
   // The preview is what a designer watches: it starts now, before the plots are built. The oscillator's needs
@@ -273,11 +350,19 @@ async function runTune() {
     () => {
       const series = responseSeries(tune);
       lastSeries = series;
+      const chosen = series.methods[chosenMethod(tune)];
+      if (chosen) {
+        live = { curve: { t: series.t, x: chosen }, source: 'answer', fps: Number(state.fps), ask: JSON.stringify(askedResponse(state, words)) };
+        drawAtSlider();
+      }
       drawResponse($('plot-response'), series, chosenMethod(tune), comparison.pinned?.series, identifyOverlay());
       $('response-note').textContent = sameCurve(series.methods.soft, series.methods.implicit_euler)
         ? 'The soft constraint and implicit Euler draw one curve: they are the same integrator (Catto, GDC 2011).' : '';
     },
-    () => drawError($('plot-error'), lastSeries),
+    () => {
+      drawError($('plot-error'), lastSeries);
+      placeCursors();
+    },
   ];
   for (const [i, step] of steps.entries()) {
     if (i > 0) await tracked(new Promise((r) => setTimeout(r, 0)));
@@ -289,10 +374,21 @@ async function runTune() {
 
 const chosenMethod = (tune) => (tune.mode === 'exact' ? 'soft_exact' : 'soft');
 
+/// Whether the preset's scene is tuned by a mode (its simulation solves the joints' k and c for it).
+function modalTuned(state) {
+  if (!box2dPreset(state) || !presetScene) return false;
+  const asked = presetRequest(state, presetScene);
+  return Boolean((asked.scene ?? presetScene).modal_tuning);
+}
+
 function describeTuning(state) {
   const feel = state.osc ? `${state.osc} oscillation` : `damping ratio ${state.zeta}`;
   return `${state.preset || 'custom'}, ${state.frames} frames, ${feel}, ${state.mode}`;
 }
+
+$('ab-side').addEventListener('change', (e) => {
+  document.querySelector('main').dataset.abLayout = e.target.checked ? 'side' : 'ghost';
+});
 
 $('pin').addEventListener('click', () => {
   const tune = window.softtune?.tune;
@@ -312,17 +408,20 @@ function sameCurve(a, b) {
 // The simulation and the accuracy run wait for a drag to settle. The preview does not: the render pool
 // takes the newest preview first (render/src/frame_pipeline.cpp), so a drag's stale previews render behind
 // the one the designer waits for, and stay cached for undo.
-const scheduleSlow = trackedDebounce((state, request, tune) => {
+const slowWait = trackedWait((state, request, tune) => {
   runSimulate(state, tune);
   runAccuracy(request);
-}, 100);
+});
+const scheduleSlow = (state, request, tune) => slowWait.call(100, state, request, tune);
 // A Box2D preset's preview needs no tune answer (the server tunes the scene): it starts with the change,
 // a little after the tune request, whose answer it would otherwise slow down (its scene's run and modal
 // solve take the server's cores for 50 ms: at 30 ms the numbers' p95 went from 95 to 224 ms).
-const schedulePreview = trackedDebounce(() => {
+const PREVIEW_AFTER_TUNE_MS = 30;
+const previewWait = trackedWait(() => {
   const state = readForm(form);
   if (box2dPreset(state) && inputProblems(form).length === 0) runPreview(state, null);
-}, 60);
+});
+const schedulePreview = (ms) => previewWait.call(ms);
 
 function unavailable(what) {
   return `${what} is not available on this server.`;
@@ -366,7 +465,7 @@ function showPresetJoints(state, doc) {
     // The first joint is the preset's default: a link names a joint only when it picks another.
     urlDefaults = { ...urlDefaults, joint: joints[0]?.id ?? '' };
     syncControls();
-    if (picked !== state.joint) updateUrl(true);
+    if (picked !== state.joint) updateUrl(true, true);
   }
 }
 
@@ -384,23 +483,32 @@ async function runSimulate(state, tune) {
     if (box2dPreset(state)) presetJoints = [];
     return;
   }
+  const generation = generations.current;
   try {
     const doc = await tracked(channels.simulate.run((signal) => callJson('POST', 'api/v1/simulate', simulateRequest(state, tune), signal)));
-    if (doc === Latest.stale) return;
+    if (doc === Latest.stale || !generations.belongs(generation)) return;
     if (box2dPreset(state)) showPresetJoints(state, doc);
     const modal = showModalTargets($('modal-targets'), $('modal-note'), doc.modal_tuning);
     $('modal-group').hidden = !modal;
     $('joints-caption').textContent = modal ? "The scene's tuned joints: k and c solved for the mode"
       : "The scene's tuned joints: each takes this tuning on the effective mass its bodies give it";
-    if (modal) showModalSummary($('summary'), doc.modal_tuning, chosenVerdict(tune));
+    if (modal) {
+      showModalSummary($('summary'), doc.modal_tuning, chosenVerdict(tune));
+      const t = doc.modal_tuning.targets?.[0];
+      clearPending($('summary'));
+      showOffBy($('summary'), t?.requested, t?.measured);
+    }
     lanes = box2dPreset(state) ? oscillatorLanes(doc.probes) : [];
     $('lanes-figure').hidden = lanes.length === 0;
     note.textContent = doc.stages ? `Stages run: ${doc.stages.join(', ')}` : '';
     figure.hidden = false;
     drawSimulation($('plot-simulation'), doc.probes ?? [], probeUnit);
+    placeCursors();
     showProbes(body, doc.probes ?? []);
   } catch (e) {
     if (!(e instanceof ApiError)) throw e;
+    if (!generations.belongs(generation)) return;
+    clearPending($('summary'));
     if (box2dPreset(state) && presetJoints === null) presetJoints = [];
     $('modal-group').hidden = true;
     body.replaceChildren();
@@ -426,8 +534,9 @@ async function runAccuracy(request) {
     return;
   }
   try {
+    const generation = generations.current;
     const doc = await tracked(channels.accuracy.run((signal) => callJson('POST', 'api/v1/accuracy', request, signal)));
-    if (doc === Latest.stale) return;
+    if (doc === Latest.stale || !generations.belongs(generation)) return;
     drawWorkPrecision(el, doc.rows ?? []);
     note.textContent = `Recommendation: ${describe(doc.recommendation)}`;
   } catch (e) {
@@ -452,8 +561,10 @@ async function runPreview(state, tune) {
   }
   const request = previewRequest(state, tune, presetScene);
   const text = JSON.stringify(request);
-  if (text === lastPreview) return;  // asked already (a preset's preview starts with the change)
-  lastPreview = text;
+  // Asked already for this input (a preset's preview starts with the change, then the tune answer asks).
+  const generation = generations.current;
+  if (`${generation} ${text}` === lastPreview) return;
+  lastPreview = `${generation} ${text}`;
   player.supersede();  // the frames of the preview this one replaces stop loading
   $('preview').dataset.request = text;  // what this preview shows, for tests and tools
   try {
@@ -469,7 +580,7 @@ async function runPreview(state, tune) {
       while (!Array.isArray(answer.frames) && answer.id) {
         if (answer.status === 'failed') throw new ApiError(500, { detail: 'the preview failed to render' });
         player.rendering(answer.progress ?? answer);
-        if (!shownFirst && answer.progress?.ready >= 1 && answer.progress_url) {
+        if (!shownFirst && answer.progress?.ready >= 1 && answer.progress_url && generations.belongs(generation)) {
           player.first(`${answer.progress_url}/0.png`);
           shownFirst = true;
         }
@@ -479,7 +590,7 @@ async function runPreview(state, tune) {
       }
       return { ...answer, fromCache, frameSeconds: first.frame_dt_s, warnings: first.warnings ?? [] };
     }));
-    if (doc === Latest.stale) return;
+    if (doc === Latest.stale || !generations.belongs(generation)) return;
     player.load(doc.frames ?? [], doc.filmstrip, doc.frameSeconds);
     const n = doc.frames?.length ?? 0;
     const seconds = doc.frameSeconds > 0 ? `, ${fmt(Math.round((n - 1) * doc.frameSeconds * 100) / 100)} s of ${state.preset || 'oscillator'} played in real time` : '';
@@ -501,10 +612,14 @@ async function runPreview(state, tune) {
 /// link or a history step keeps the controls it holds. Either way the numbers, simulation and preview
 /// then run on that preset.
 async function loadPreset(name, adopt) {
+  generations.accept();
   presetScene = null;
   presetJoints = null;
   urlDefaults = DEFAULTS;
   $('preset-note').textContent = '';
+  $('preset-details').hidden = true;
+  // The last preset's joints are not this one's: a pick of this preset never carries one of them.
+  if (adopt) $('joint').replaceChildren(new Option('', ''));
   $('joints').querySelector('tbody').replaceChildren();
   $('modes-panel')?.replaceChildren();
   if (name) {
@@ -512,7 +627,9 @@ async function loadPreset(name, adopt) {
     if ($('preset').value !== name) return;
     presetScene = scene;
     if (scene) loadModes(name);
-    $('preset-note').textContent = scene?.description ?? note;
+    $('preset-note').textContent = scene ? presetWords(name, scene.description ?? '') : note;
+    $('preset-tech').textContent = scene?.description ?? '';
+    $('preset-details').hidden = !scene?.description;
     if (scene) urlDefaults = { ...DEFAULTS, ...stateFromScene(scene, words) };
     writeForm(form, adopt ? { ...urlDefaults, preset: name } : fromQuery(location.search, urlDefaults, words));
     if (scene && !isBox2dScene(scene)) presetJoints = [];
@@ -578,6 +695,7 @@ $('import').addEventListener('change', async (e) => {
 
 /// The controls of the address bar's query (a history step, an import).
 async function restoreFromUrl() {
+  generations.accept();
   const before = $('preset').value;
   const named = fromQuery(location.search, DEFAULTS, words).preset;
   entryOpen = false;

@@ -121,7 +121,7 @@ export function installIdentify(panel, { request, engines, redraw }) {
   const label = document.createElement('label');
   label.textContent = 'Recorded in ';
   const select = document.createElement('select');
-  select.name = 'identify-engine';
+  // No name: the engine of a recording is not tuning state (a link cannot carry the recording either).
   select.setAttribute('aria-label', 'Engine the recording comes from');
   const input = document.createElement('input');
   input.type = 'file';
@@ -160,7 +160,9 @@ export function installIdentify(panel, { request, engines, redraw }) {
   select.addEventListener('focus', fillEngines);
   fillEngines();
 
+  let sent = 0;  // recordings sent: only the newest one's answer is shown and counted as a round
   async function send(file) {
+    const mine = ++sent;
     error.textContent = '';
     if (file.size > MAX_CSV_BYTES) {
       error.textContent = `${file.name} is larger than the 1 MiB the service accepts`;
@@ -181,6 +183,7 @@ export function installIdentify(panel, { request, engines, redraw }) {
       return;
     }
     const doc = await r.json().catch(() => null);
+    if (mine !== sent) return;  // a newer recording was dropped meanwhile: this answer is of an older round
     if (!r.ok) {
       error.textContent = doc ? `${doc.field ? `${doc.field}: ` : ''}${doc.detail ?? doc.title}` : `identify failed (${r.status})`;
       return;
@@ -191,9 +194,10 @@ export function installIdentify(panel, { request, engines, redraw }) {
     if (round) rounds.list.push(round);
     rounds.next = doc.correction?.next ?? null;
     note.textContent = `${file.name} (round ${rounds.list.length || 1}): ${identifiedRow(doc, select.value).did}`;
-    note.dataset.round = String(rounds.list.length);
     again.hidden = !(rounds.next && !doc.exact && doc.correction?.verdict !== 'met');
     restart.hidden = rounds.list.length < 2;
+    // The round's marker last: whoever waits for it finds the answer's whole state in place.
+    note.dataset.round = String(rounds.list.length);
     redraw();
   }
   input.addEventListener('change', () => input.files[0] && send(input.files[0]));

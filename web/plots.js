@@ -26,10 +26,16 @@ function draw(el, opts, data) {
   charts.get(el)?.destroy();
   el.replaceChildren();
   el.classList.remove('unavailable');
-  const chart = new uPlot({ width: width(el), height: height(el), ...opts }, data, el);
+  // A drag on a chart moves the page's time cursor (time_cursor.js), so it does not zoom.
+  const chart = new uPlot({ width: width(el), height: height(el), cursor: { drag: { x: false, y: false } }, ...opts }, data, el);
   charts.set(el, chart);
   el.dataset.points = String(data[0].length);
   tableBehind(el, opts.series.map((s) => s.label), data);
+}
+
+/// The chart drawn in `el` now (undefined before the first answer), for the time cursor.
+export function chartOf(el) {
+  return charts.get(el);
 }
 
 /// Rows a plot's data table shows at most (every n-th sample beyond that).

@@ -1,6 +1,12 @@
 // The preview panel: rendered frames as an animation played in real time (each frame held for the scene
-// time it stands for, `frame_dt_s` of the answer), starting by itself and looping, unless the designer
-// paused it; a scrubber, a progress bar while frames render and load, and the filmstrip.
+// time it stands for, `frame_dt_s` of the answer), or slowed to 0.5x or 0.25x, starting by itself and
+// looping, unless the designer paused it; a scrubber, a frame step back and forth, a progress bar while
+// frames render and load, and the filmstrip. The frame shown is the page's one time cursor
+// (img[data-frame] x data-frame-seconds): the plots' cursors and the live curve's dot follow it, and
+// seek() lets a plot move it.
+
+/// Playback speeds offered, as fractions of real time.
+export const SPEEDS = [1, 0.5, 0.25];
 
 /// Frames fetched at once while a preview loads: of a browser's six connections to one server, two stay free,
 /// so a designer's next change (its tune, its preview and the progress polls) never queues behind a long
@@ -17,6 +23,7 @@ export class PreviewPlayer {
   #dt = 1 / 30;       // s of scene time per frame
   #startedAt = 0;     // performance.now() at which frame 0 would have shown
   #userPaused = false;
+  #speed = 1;
 
   constructor(root) {
     this.img = root.querySelector('#preview');
@@ -35,6 +42,41 @@ export class PreviewPlayer {
       this.pause();
       this.#show(Number(this.scrub.value));
     });
+    this.back = root.querySelector('#frame-back');
+    this.forward = root.querySelector('#frame-forward');
+    this.speedPick = root.querySelector('#speed');
+    this.back?.addEventListener('click', () => this.step(-1));
+    this.forward?.addEventListener('click', () => this.step(+1));
+    this.speedPick?.addEventListener('change', () => { this.speed = Number(this.speedPick.value); });
+  }
+
+  /// The playback speed (a fraction of real time); changing it keeps the frame shown.
+  get speed() {
+    return this.#speed;
+  }
+
+  set speed(v) {
+    if (!SPEEDS.includes(v)) return;
+    this.#speed = v;
+    if (this.speedPick) this.speedPick.value = String(v);
+    if (this.#raf) this.#startedAt = performance.now() - (this.#index * this.#dt * 1000) / v;
+  }
+
+  /// One frame back (-1) or forward (+1), looping; pauses, as a frame step is for looking closely.
+  step(by) {
+    if (this.#frames.length < 2) return;
+    this.#userPaused = true;
+    this.pause();
+    const n = this.#frames.length;
+    this.#show((((this.#index + by) % n) + n) % n);
+  }
+
+  /// Shows the frame nearest scene time `t` (s), paused (a plot's time cursor dragged).
+  seek(t) {
+    if (this.#frames.length === 0) return;
+    this.#userPaused = true;
+    this.pause();
+    this.#show(Math.max(0, Math.min(this.#frames.length - 1, Math.round(t / this.#dt))));
   }
 
   get playing() {
@@ -84,6 +126,7 @@ export class PreviewPlayer {
     this.scrub.max = String(Math.max(0, urls.length - 1));
     this.scrub.disabled = urls.length < 2;
     this.play.disabled = urls.length < 2;
+    for (const b of [this.back, this.forward]) if (b) b.disabled = urls.length < 2;
     this.progress.max = urls.length;
     this.progress.value = 0;
     this.progress.hidden = false;
@@ -155,11 +198,11 @@ export class PreviewPlayer {
     if (this.#frames.length < 2 || this.#raf) return;
     this.play.textContent = 'Pause';
     this.play.setAttribute('aria-pressed', 'true');
-    this.#startedAt = performance.now() - this.#index * this.#dt * 1000;
+    this.#startedAt = performance.now() - (this.#index * this.#dt * 1000) / this.#speed;
     const tick = (now) => {
-      // The frame of this moment in scene time, looping: real time whatever the display's refresh rate.
-      // (rAF's timestamp may precede the start by a fraction of a frame: never a negative index.)
-      const n = Math.max(0, Math.floor((now - this.#startedAt) / (this.#dt * 1000))) % this.#frames.length;
+      // The frame of this moment in scene time, looping: real time (times the speed) whatever the display's
+      // refresh rate. (rAF's timestamp may precede the start by a fraction of a frame: never a negative index.)
+      const n = Math.max(0, Math.floor(((now - this.#startedAt) * this.#speed) / (this.#dt * 1000))) % this.#frames.length;
       if (n !== this.#index) this.#show(n);
       this.#raf = requestAnimationFrame(tick);
     };

@@ -34,19 +34,45 @@ export function writeForm(form, state) {
   }
 }
 
-/// The query string for `state`: the values that differ from `defaults`, in a stable order.
+/// The URL's one form (docs/page.md, "URL state"): each control under its own name, only values that
+/// differ from `defaults`, in a stable order. A fine damping ratio is `zeta=0.25` alone (no `osc`: a
+/// word's ratio follows from the word, so `zeta` is written only without one); an empty value (an inertia
+/// left empty, a box unticked) is `none`, so no key is ever empty; keys that are not controls with a
+/// default (the identify drop's engine) are not written.
 export function toQuery(state, defaults) {
   const q = new URLSearchParams();
-  for (const [k, v] of Object.entries(state)) if (v !== defaults[k]) q.set(k, v);
+  for (const [k, v] of Object.entries(state)) {
+    if (!(k in defaults)) continue;
+    if (k === 'osc' && v === '') continue;
+    if (k === 'zeta' && state.osc !== '') continue;
+    if (v === defaults[k] && !(k === 'zeta' && defaults.osc !== '')) continue;
+    q.set(k, v === '' ? EMPTY : v);
+  }
   return q.toString();
 }
 
+/// How an empty value is written in a link (never an empty key).
+const EMPTY = 'none';
+
+/// The request's field names a link may use instead of the controls' (`?damping_ratio=0.25`,
+/// `?response_frames=24`); the page writes the controls' names.
+export const QUERY_ALIASES = { response_frames: 'frames', basis_fps: 'basis', oscillation: 'osc', damping_ratio: 'zeta',
+  effective_mass: 'mass' };
+
 /// The state a query string describes, on top of `defaults`; unknown keys are ignored. `words` is the
-/// damping ratio of each oscillation word as the server documents it (api.js oscillationWords()).
+/// damping ratio of each oscillation word as the server documents it (api.js oscillationWords()). A link
+/// carries an oscillation word (`osc=none`, which sets the fine slider) or a fine ratio (`zeta=0.25`,
+/// which means no word); with both, the word wins. `none` is an empty value except as the word.
 export function fromQuery(search, defaults, words = {}) {
   const state = { ...defaults };
-  for (const [k, v] of new URLSearchParams(search)) if (k in defaults) state[k] = v;
-  // A link carries either an oscillation word or a fine damping ratio; the word wins and sets the slider.
+  const given = new Set();
+  for (const [key, v] of new URLSearchParams(search)) {
+    const k = QUERY_ALIASES[key] ?? key;
+    if (!(k in defaults)) continue;
+    state[k] = v === EMPTY && k !== 'osc' ? '' : v;
+    given.add(k);
+  }
+  if (given.has('zeta') && !given.has('osc')) state.osc = '';
   if (state.osc in words) state.zeta = String(words[state.osc]);
   return state;
 }

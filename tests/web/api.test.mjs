@@ -3,7 +3,7 @@
 // Run: node --test tests/web/api.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { ApiError, Latest, debounce } from '../../web/api.js';
+import { ApiError, Latest } from '../../web/api.js';
 
 const later = (ms, value) => new Promise((r) => setTimeout(() => r(value), ms));
 
@@ -35,10 +35,12 @@ test('problem documents: field, detail and which statuses mean the route is miss
   assert.equal(new ApiError(500, null).message, 'HTTP 500');
 });
 
-test('debounce calls once, with the last arguments, after the calls stop', async () => {
-  const calls = [];
-  const f = debounce((x) => calls.push(x), 20);
-  f(1); f(2); f(3);
-  await later(50);
-  assert.deepEqual(calls, [3]);
+test('cancel makes the call in flight stale and aborts it, without starting another', async () => {
+  const channel = new Latest();
+  let signal;
+  const first = channel.run((s) => { signal = s; return later(20, 'answer of a refused input'); });
+  channel.cancel();
+  assert.equal(signal.aborted, true);
+  assert.equal(await first, Latest.stale);
+  assert.equal(await channel.run(() => later(1, 'next')), 'next', 'the channel serves the next call');
 });

@@ -26,14 +26,44 @@ const DEFAULTS = {
 test('a query holds only what differs from the defaults and restores it', () => {
   const state = { ...DEFAULTS, frames: '24', osc: '', zeta: '0.25', mode: 'exact' };
   const query = toQuery(state, DEFAULTS);
-  assert.equal(query, 'frames=24&osc=&zeta=0.25&mode=exact');
+  assert.equal(query, 'frames=24&zeta=0.25&mode=exact');
   assert.deepEqual(fromQuery(query, DEFAULTS, WORDS), state);
+  // A link written before this form (an empty osc) still reads the same.
+  assert.deepEqual(fromQuery('frames=24&osc=&zeta=0.25&mode=exact', DEFAULTS, WORDS), state);
   assert.equal(toQuery(DEFAULTS, DEFAULTS), '');
   // An oscillation word sets the fine slider; unknown keys are ignored.
   assert.equal(fromQuery('osc=none&zeta=0.3&bogus=1', DEFAULTS, WORDS).zeta, '1');
   // The words are the core's damping ratios (docs/math.md), read from the server, not copied into the page.
   assert.deepEqual(WORDS, { free: 0, some: 0.5, none: 1 });
   assert.ok(!('bogus' in fromQuery('bogus=1', DEFAULTS)));
+});
+
+test('the documented short forms are read, and no key is ever written empty', () => {
+  // ?zeta=0.25 alone is a fine damping ratio: no oscillation word (the default "some" must not win).
+  const fine = fromQuery('zeta=0.25', DEFAULTS, WORDS);
+  assert.equal(fine.osc, '');
+  assert.equal(fine.zeta, '0.25');
+  assert.equal(tuneRequest(fine).damping_ratio, 0.25);
+  assert.equal(tuneRequest(fine).oscillation, undefined);
+  // A fine ratio equal to the default word's ratio is still a fine ratio, and says so.
+  assert.equal(toQuery({ ...DEFAULTS, osc: '', zeta: '0.5' }, DEFAULTS), 'zeta=0.5');
+  assert.equal(fromQuery('zeta=0.5', DEFAULTS, WORDS).osc, '');
+  // A word's ratio follows from the word: never written beside it.
+  assert.equal(toQuery({ ...DEFAULTS, osc: 'none', zeta: '1' }, DEFAULTS), 'osc=none');
+  // The request's own field names are read as the controls'.
+  assert.deepEqual(fromQuery('response_frames=24&damping_ratio=0.3&basis_fps=30&effective_mass=2', DEFAULTS, WORDS),
+    { ...DEFAULTS, frames: '24', osc: '', zeta: '0.3', basis: '30', mass: '2' });
+  // Empty values (an inertia left empty, a box unticked) are "none", and read back as empty.
+  const emptied = { ...DEFAULTS, body: 'constraint', a_static: '', b_inertia: '' };
+  const query = toQuery(emptied, DEFAULTS);
+  assert.equal(query, 'body=constraint&a_static=none&b_inertia=none');
+  assert.deepEqual(fromQuery(query, DEFAULTS, WORDS), emptied);
+  assert.equal(fromQuery('osc=none', DEFAULTS, WORDS).osc, 'none', '"none" is a word for the oscillation');
+  // Keys without a default (the identify drop's engine picker) are not written: no `identify-engine=`.
+  assert.equal(toQuery({ ...DEFAULTS, 'identify-engine': '', frames: '30' }, DEFAULTS), 'frames=30');
+  for (const q of [query, toQuery({ ...DEFAULTS, osc: '', zeta: '0.25' }, DEFAULTS)]) {
+    for (const [k, v] of new URLSearchParams(q)) assert.notEqual(v, '', `empty key ${k} in ${q}`);
+  }
 });
 
 test('the tune request of the default state is what docs/api.md documents, and the codec accepts it', () => {
