@@ -25,7 +25,7 @@ import { chainField, showChain } from './chain.js';
 import { chosenVerdict, copyText, fmt, showModalSummary, showNumbers, showStability, showSummary } from './results.js';
 import { probeUnit, showJoints, showModalTargets, showProbes, tunedJoints } from './simulate_panel.js';
 import { identifyOverlay, installIdentify, showIdentified } from './identify.js';
-import { showModes } from './modes.js';
+import { modesOfAnswer, showModes, solvedAnswer } from './modes.js';
 import {
   fromQuery, presetRequest, previewRequest, readForm, stateFromScene, toQuery, tuneRequest, tuningFields,
   writeForm,
@@ -90,7 +90,7 @@ buildBodies($('bodies'), $('body-template'));
 const DEFAULTS = readForm(form);
 let urlDefaults = DEFAULTS;
 
-const channels = { tune: new Latest(), simulate: new Latest(), accuracy: new Latest(), preview: new Latest() };
+const channels = { tune: new Latest(), simulate: new Latest(), accuracy: new Latest(), preview: new Latest(), modes: new Latest() };
 let words = {};          // oscillation word -> damping ratio, from the server's OpenAPI document
 let presetScene = null;  // the scene document of the picked preset, once loaded
 let presetJoints = null; // a Box2D preset's tuned joints (their masses come from its bodies), once simulated
@@ -287,6 +287,7 @@ async function runTune() {
   }
   const joint = presetJoints?.find((j) => j.id === state.joint);
   const request = tuneRequest(state, box2dPreset(state) && joint ? joint.model_mass : undefined);
+  if (box2dPreset(state) && joint?.engine_settings) request.engine_settings = joint.engine_settings;  // its own def
   const chain = chainField($('chain-mass-ratio')?.value);  // no name: not part of the URL state
   $('chain-error').textContent = chain instanceof Error ? chain.message : '';
   if (chain && !(chain instanceof Error)) request.chain = chain;
@@ -310,9 +311,11 @@ async function runTune() {
     $('zeta').value = String(tune.requested.damping_ratio);
     $('zeta-out').textContent = tune.requested.damping_ratio.toFixed(2);
   }
+  // A modally tuned preset's joint shows its solved answer (the last simulation's), never the per-spring tune.
   // Merged, not replaced: the identify answer (identify.js) lives here too, and this tune (the redraw its
   // round asks for) must not wipe it while a reader of the round's marker is about to read it.
-  window.softtune = { ...window.softtune, request, tune };
+  const solved = solvedFor(state);
+  window.softtune = { ...window.softtune, request, tune: solved ?? tune };
   results.classList.remove('stale');
   // A preset tuned by its modes shows its scene's solve in the bar: until that answer, the last one stays,
   // marked pending (the tune answer describes one spring on its own mass).
@@ -324,7 +327,7 @@ async function runTune() {
     clearPending($('summary'));
     showOffBy($('summary'), tune.requested, tune.achieved);
   }
-  showNumbers(results, tune);
+  showNumbers(results, solved ?? tune);
   comparison.showNumbers();
   // The preview is what a designer watches: it starts now, before the plots are built. The oscillator's needs
   // this answer (its mass and duration); a Box2D preset's started with the change (schedulePreview) unless
@@ -342,7 +345,7 @@ async function runTune() {
       if (!$('mass-terms').hidden) drawConstraint($('constraint-drawing'), state);
       showStability(results, tune, Number(state.fps), Number(state.substeps));
     },
-    () => showEngines(results, tune),
+    () => showEngines(results, solvedFor(state) ?? tune),
     () => {
       showChain(document, tune);
       showIdentified(results);
@@ -492,12 +495,15 @@ async function runSimulate(state, tune) {
     $('modal-group').hidden = !modal;
     $('joints-caption').textContent = modal ? "The scene's tuned joints: k and c solved for the mode"
       : "The scene's tuned joints: each takes this tuning on the effective mass its bodies give it";
+    lastSolved = modal && box2dPreset(state) ? { preset: state.preset, doc } : null;
     if (modal) {
       showModalSummary($('summary'), doc.modal_tuning, chosenVerdict(tune));
       const t = doc.modal_tuning.targets?.[0];
       clearPending($('summary'));
       showOffBy($('summary'), t?.requested, t?.measured);
+      showSolvedJoint(solvedFor(readForm(form)));
     }
+    refreshModes(state, doc);
     lanes = box2dPreset(state) ? oscillatorLanes(doc.probes) : [];
     $('lanes-figure').hidden = lanes.length === 0;
     note.textContent = doc.stages ? `Stages run: ${doc.stages.join(', ')}` : '';
@@ -641,14 +647,38 @@ async function loadPreset(name, adopt) {
   scheduleTune();
 }
 
+let lastSolved = null;  // {preset, doc}: the last simulation of a modally tuned preset
+
+/// The picked joint's solved answer from the last simulation of this preset, or null (not modally tuned).
+function solvedFor(state) {
+  return box2dPreset(state) && lastSolved?.preset === state.preset ? solvedAnswer(lastSolved.doc, state.joint) : null;
+}
+
+/// A modally tuned preset: the picked joint's solved answer (server: joint_answer_codec.h) is what the Numbers,
+/// the engine table, the Copy snippet and a pinned A show, so they say the k, c the preview ran.
+function showSolvedJoint(answer) {
+  if (!answer) return;
+  window.softtune = { ...window.softtune, tune: answer };
+  showNumbers(results, answer);
+  comparison.showNumbers();
+  showEngines(results, answer);
+}
+
+/// The modes list follows every answer: a modal tuning's solved modes, else the modes of the scene as tuned now.
+function refreshModes(state, doc) {
+  const listing = modesOfAnswer(doc);
+  if (listing) showModes($('modes-panel'), listing, $('target').value);
+  else if (box2dPreset(state)) loadModes(state.preset, simulateRequest(state, null));
+}
+
 /// The preset's modes (modes.js): radios of the `target` control; picking one makes the sliders tune it.
-async function loadModes(name) {
+async function loadModes(name, request = { preset: name }) {
   const panel = $('modes-panel');
   if (!panel) return;
-  panel.replaceChildren();
-  if (!presetScene?.bodies?.length || !hasRoute('POST', '/api/v1/modes')) return;
+  if (!presetScene?.bodies?.length || !hasRoute('POST', '/api/v1/modes')) return panel.replaceChildren();
   try {
-    const answer = await tracked(callJson('POST', 'api/v1/modes', { preset: name }));
+    const answer = await tracked(channels.modes.run((signal) => callJson('POST', 'api/v1/modes', request, signal)));
+    if (answer === Latest.stale) return;
     if ($('preset').value !== name) return;
     showModes(panel, answer, $('target').value);
   } catch (e) {

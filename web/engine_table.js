@@ -3,8 +3,8 @@
 // follow whatever engines the answer carries; one with a model (engines.<name>.parameters) shows its
 // report, one without shows its older fields. web/engines.js builds every text; this file only draws.
 import {
-  ENGINE_LABELS, engineKeys, engineSnippet, engineWarnings, formatDifference, isModelled, legacyFields, notesFor, shortName,
-  verdict,
+  ENGINE_LABELS, comparedTo, engineKeys, engineSnippet, engineWarnings, formatDifference, isModelled, legacyFields, notesFor,
+  shortName, verdict,
 } from './engines.js';
 import { copyText, fmt, formatPercent } from './results.js';
 
@@ -45,7 +45,7 @@ function errorClass(p, small, big) {
 /// What a set of values does in the engine, against the request: frequency with its error in percent,
 /// damping ratio with its error as a difference; or a "blows up" / "cannot" badge and why.
 function prediction(e, which, prefix) {
-  const v = verdict(which === 'exact' ? e.exact_predicted : e.predicted, shown.requested);
+  const v = verdict(which === 'exact' ? e.exact_predicted : e.predicted, comparedTo(e, shown));
   const box = el('div', { className: `prediction state-${v.state}` });
   if (v.state === 'blows_up' || v.state === 'cannot') {
     box.append(el('strong', { className: 'badge', textContent: v.state === 'blows_up' ? 'blows up' : 'cannot', dataset: { testid: `${prefix}-state` } }),
@@ -98,8 +98,10 @@ function rows(root, key) {
   const code = () => engineSnippet(key, e, shown, chosenValues(root));
   const pre = el('pre', { dataset: { testid: 'snippet' } });
   pre.textContent = code();
+  // A solved scene joint says where each engine's values come from: the scene's run, or a per-joint model.
+  const basis = e?.note ? el('small', { className: 'note basis', textContent: e.note, dataset: { testid: 'engine-basis', basis: e.basis ?? '' } }) : null;
   const head = el('th', { scope: 'row', title: e?.model ?? '' }, el('span', { className: 'engine-name', textContent: label }),
-    modelled ? settingsLine(e) : null);
+    modelled ? settingsLine(e) : null, basis);
   const cells = modelled
     ? [valueList(e.parameters), prediction(e, 'plain', 'predicted'), exactCell(e)]
     : [valueList(Object.fromEntries(legacyFields(e))),
@@ -125,7 +127,7 @@ export function showEngines(root, tune) {
   const req = tune.requested ?? {};
   root.querySelector('#engines-note').textContent =
     `Predicted: what each engine's own step does with the values to type, against the request (error in percent for the frequency, difference for the damping ratio ζ). Exact: the values that make the engine do what was asked.`;
-  root.querySelector('#engines-asked').textContent = `asked ${fmt(req.frequency_hz)} Hz, ζ ${fmt(req.damping_ratio)}`;
+  root.querySelector('#engines-asked').textContent = `asked ${req.mode ? `${req.mode} ` : ''}${fmt(req.frequency_hz)} Hz, ζ ${fmt(req.damping_ratio)}`;
   root.querySelector('#engines tbody').replaceChildren(...engineKeys(tune).flatMap((key) => rows(root, key)));
 }
 

@@ -25,7 +25,7 @@ const xmlComment = (text) => `<!-- ${String(text).replace(/-{2,}/g, '-')} -->`;
 // and code(w, settings, h): the snippet's lines, where w.slot(name) is the slot's literal (or undefined),
 // w.line(slots, make) writes make(...literals) or, when a slot has no value, a comment naming it.
 
-const BOX2D_V2_4_DEFS = { distance: 'b2DistanceJointDef', wheel: 'b2WheelJointDef', mouse: 'b2MouseJointDef' };
+const BOX2D_V2_4_DEFS = { distance: 'b2DistanceJointDef', wheel: 'b2WheelJointDef', mouse: 'b2MouseJointDef', weld: 'b2WeldJointDef' };
 const box2dV24Fields = Object.fromEntries(Object.values(BOX2D_V2_4_DEFS).flatMap((def) => [
   [`${def}::stiffness`, { slot: 'stiffness', unit: 'N/m' }],
   [`${def}::damping`, { slot: 'damping', unit: 'N s/m' }],
@@ -263,9 +263,9 @@ export function isModelled(e) {
 export function engineSnippet(key, e, tune, which) {
   const syntax = ENGINE_SYNTAX[key];
   if (!syntax || !isModelled(e)) return legacySnippet(key, e);
-  const settings = e.settings ?? {};
-  const requested = tune.requested ?? {};
   const values = which === 'exact' ? e.exact : e.parameters;
+  const settings = e.settings ?? {};
+  const requested = comparedTo(e, tune);
   const predicted = which === 'exact' ? e.exact_predicted : e.predicted;
   const c = syntax.comment;
   if (!values) {
@@ -274,9 +274,16 @@ export function engineSnippet(key, e, tune, which) {
   }
   const v = verdict(predicted, requested);
   const head = [c(`${syntax.label} (${syntax.language}), ${which === 'exact' ? 'exact' : 'plain'} values: ${describeVerdict(v)}`)];
+  if (e.note) head.push(c(e.note));
   if (v.state !== 'ok') head.push(...notesFor(e, which).map(c));
   const w = writer(syntax, values);
   return [...head, ...syntax.code(w, settings, tune.h), ...w.unknown()].join('\n');
+}
+
+/// What an engine's prediction is held against: the request, or what the answer names for that engine
+/// (`compared_to`: a solved scene joint's per-joint model is held against Box2D 2.4's joint alone).
+export function comparedTo(e, tune) {
+  return e?.compared_to ?? tune?.requested ?? {};
 }
 
 // ---- the verdict of a prediction -------------------------------------------------------------------

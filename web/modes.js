@@ -131,7 +131,9 @@ export function showModes(panel, answer, pickedKey, doc = document) {
     if (seen.has(key)) continue;
     seen.add(key);
     listed ||= key === pickedKey;
-    const li = choice(`${m.name}: ${fmtHz(m.discrete ?? m.continuous)}`, key);
+    // The label names what the pick asks for (the body and motion of the target it makes), so a mode named
+    // for another body by its energy ("plank_2 heave") never stands for a pick of plank_1.
+    const li = choice(`${target.body} ${target.mode}: ${fmtHz(m.discrete ?? m.continuous)}`, key);
     li.dataset.testid = 'mode';
     li.appendChild(modeArrows(m, doc));
   }
@@ -139,4 +141,18 @@ export function showModes(panel, answer, pickedKey, doc = document) {
   const picked = parseTarget(pickedKey);
   if (!listed && picked) choice(`${picked.body} ${picked.mode} (the scene's target)`, pickedKey).dataset.testid = 'mode';
   panel.appendChild(list);
+}
+
+/// The modes listing a simulate answer carries: a modal tuning's modes of the solved system ({at_s, settled,
+/// modes}, as POST /api/v1/modes answers), or null when it has none.
+export function modesOfAnswer(doc) {
+  const m = doc?.modal_tuning;
+  return m && Array.isArray(m.modes) ? { at_s: m.at_s ?? 0, settled: !!m.settled, modes: m.modes } : null;
+}
+
+/// The tune-shaped answer of joint `id` (or of the first solved joint) in a simulate answer of a modally tuned
+/// scene: its solved k, c, the target asked, the mode measured, and each engine's values; null when none.
+export function solvedAnswer(doc, id) {
+  const joints = (doc?.joints ?? []).filter((j) => j.answer);
+  return (joints.find((j) => j.id === id) ?? joints[0])?.answer ?? null;
 }

@@ -181,7 +181,14 @@ export function showModalSummary(root, modal, verdict) {
   put('summary-damping', `${fmt(req.damping_ratio)} → ${fmt(got.damping_ratio)}`, `${t.mode}: requested → measured damping ratio`);
   put('summary-k', fmt(g?.stiffness), `each joint of ${g?.id ?? 'the group'}, solved for the mode`);
   put('summary-c', fmt(g?.damping), `each joint of ${g?.id ?? 'the group'}, solved for the mode`);
+  // Honest: a mode measured more than 3 % or 0.03 off the request, or not measured, is not a plain "stable".
   const el = root.querySelector('[data-testid="summary-verdict"]');
-  el.textContent = `${verdict ?? ''}${verdict ? ' · ' : ''}${t.mode}`;
+  const df = percentError(req.frequency_hz, got.frequency_hz);
+  const dz = typeof got.damping_ratio === 'number' && typeof req.damping_ratio === 'number' ? got.damping_ratio - req.damping_ratio : null;
+  const off = df !== null && dz !== null && (Math.abs(df) > 3 || Math.abs(dz) > 0.03);
+  const shown = df === null ? 'not measured' : off ? `off ${formatPercent(df)}, Δζ ${formatDifference(dz)}` : verdict ?? '';
+  el.textContent = `${shown}${shown ? ' · ' : ''}${t.mode}`;
+  el.className = df === null || off ? 'verdict-marginal' : verdict ? `verdict-${verdict}` : '';
+  if (df === null && t.unmeasured) el.title = t.unmeasured;
 }
 

@@ -73,7 +73,9 @@ export function modalTargetCells(t) {
   const pair = (p) => (p ? `${fmt(p.frequency_hz)} Hz, ζ ${fmt(p.damping_ratio)}` : '—');
   const e = t.error;
   const error = e ? `${formatPercent(e.frequency === null || e.frequency === undefined ? null : 100 * e.frequency)}, Δζ ${formatDifference(e.damping_ratio)}` : '—';
-  return [t.mode ?? '', pair(t.requested), pair(t.predicted), pair(t.measured), error];
+  // A target the run cannot measure says why (its probe's window shows no motion of the mode, or no probe).
+  const measured = t.measured ? pair(t.measured) : t.unmeasured ? `not measured: ${t.unmeasured}` : '—';
+  return [t.mode ?? '', pair(t.requested), pair(t.predicted), measured, error];
 }
 
 const MODAL_ROWS = ['asked', 'predicted (linear model)', 'measured (simulation)', 'error (f %, Δζ)'];

@@ -115,8 +115,8 @@ b2Joint* create_joint(b2World& world, const JointSettings& j, const JointTuning&
       d.localAnchorA = body_a->GetLocalPoint(vec(j.anchor_a));
       d.localAnchorB = body_b->GetLocalPoint(vec(j.anchor_b));
       d.length = static_cast<float>(j.length.value_or((j.anchor_b - j.anchor_a).norm()));
-      d.minLength = t.tuned ? 0.0f : d.length;
-      d.maxLength = t.tuned ? FLT_MAX : d.length;
+      d.minLength = t.soft() ? 0.0f : d.length;
+      d.maxLength = t.soft() ? FLT_MAX : d.length;
       return create(d);
     }
     case JointKind::wheel: {
@@ -221,7 +221,7 @@ double joint_angle(const b2Joint* joint) {
 
 double joint_error(const JointSettings& s, const b2Joint* joint) {
   // Springs (tuned distance joints, mouse joints) have no rigid row: answer before touching the anchors.
-  if (s.kind == JointKind::mouse || (s.kind == JointKind::distance && s.tuning)) return 0.0;
+  if (s.kind == JointKind::mouse || (s.kind == JointKind::distance && (s.tuning || s.typed))) return 0.0;
   auto* j = const_cast<b2Joint*>(joint);
   const Eigen::Vector2d gap = eig(j->GetAnchorB()) - eig(j->GetAnchorA());
   switch (s.kind) {

@@ -87,7 +87,7 @@ void joint_rows(const Scene& scene, std::size_t i, b2Joint* joint, const JointTu
   b2Body* b = joint->GetBodyB();
   const Eigen::Vector2d pa = eig(joint->GetAnchorA()), pb = eig(joint->GetAnchorB());
   const int id = static_cast<int>(i);
-  const bool soft = t.tuned && t.stiffness > 0.0;
+  const bool soft = t.soft() && t.stiffness > 0.0;
   switch (s.kind) {
     case JointKind::distance: {
       Row r = rows.linear(a, pa, b, pb, (pb - pa).normalized(), AxisFrame::along_anchors, id);

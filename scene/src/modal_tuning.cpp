@@ -152,6 +152,7 @@ bool set_group_springs(const Scene& scene, const LinearisedScene& lin, const std
     for (const std::string& id : settings.groups[g].joints) {
       const int j = find_id(scene.joints, id);
       const double m = lin.joints[j].model_mass, k = springs[g].stiffness, c = springs[g].damping;
+      tuned.joints[j].solved_spring = springs[g];
       TuneRequest& jt = *tuned.joints[j].tuning;
       jt.response_frames.reset();
       jt.oscillation.reset();
@@ -163,13 +164,11 @@ bool set_group_springs(const Scene& scene, const LinearisedScene& lin, const std
         continue;
       }
       // c < 0 (exact mode, a fast request): no standard request gives it, but the exact request of the poles
-      // implicit Euler has with (m, k, c) does -- (m + c h + k h^2) z^2 - (2 m + c h) z + m = 0 -- since
-      // exact_spring() maps those poles back to exactly this k, c.
-      const double h = lin.h, d = m + c * h + k * h * h;
-      const RecurrencePoles poles = poles_of_recurrence((2.0 * m + c * h) / d, -m / d, h);
+      // implicit Euler has with (m, k, c) does (joint_tuning.h implicit_euler_request).
+      const TuneRequest poles = implicit_euler_request(m, k, c, scene.world);
       jt.mode = SoftMode::exact;
-      jt.frequency_hz = poles.frequency_hz.value_or(0.0);
-      jt.damping_ratio = poles.damping_ratio.value_or(0.0);
+      jt.frequency_hz = poles.frequency_hz;
+      jt.damping_ratio = poles.damping_ratio;
       if (validate_tune_request(joint_request(scene, jt))) return false;
     }
   }
@@ -289,6 +288,57 @@ std::optional<FieldError> below_floor(const Scene& scene, const modes::ModalTune
   return std::nullopt;
 }
 
+// The body and coordinate a body probe reads ("chassis", y), or false for a joint probe.
+bool probe_coordinate(const ProbeSettings& p, std::string& body, modes::Dof& dof) {
+  if (p.kind != ProbeKind::displacement && p.kind != ProbeKind::angle) return false;
+  body = p.body;
+  const Eigen::Vector2d axis = p.axis.normalized();
+  dof = p.kind == ProbeKind::angle ? modes::Dof::angle : (std::abs(axis.y()) >= std::abs(axis.x()) ? modes::Dof::y : modes::Dof::x);
+  return true;
+}
+
+// The body and coordinate a target names (body + motion, or its probe's).
+bool named_coordinate(const Scene& s, const ModeTargetSettings& t, std::string& body, modes::Dof& dof) {
+  if (!t.body.empty()) {
+    body = t.body;
+    dof = *motion_dof(t.motion);
+    return true;
+  }
+  const int p = find_id(s.probes, t.probe);
+  return p >= 0 && probe_coordinate(s.probes[p], body, dof);
+}
+
+// What each probe is compared with once the groups are solved: a target's probe, and a body probe on a target's
+// body and coordinate, with that target's request; any other probe of a grouped joint with nothing (a joint's
+// travel mixes the modes: the car's rear travel moves with its heave and its pitch) -- never the solve's
+// per-joint equivalent request.
+void set_probe_requests(const Scene& scene, const ModalTuningResult& out, Scene& tuned) {
+  std::set<std::string> grouped;
+  for (const JointGroupSettings& g : scene.modal_tuning->groups) grouped.insert(g.joints.begin(), g.joints.end());
+  const auto& targets = scene.modal_tuning->targets;
+  for (ProbeSettings& p : tuned.probes) {
+    int match = -1;
+    for (std::size_t t = 0; t < out.targets.size() && match < 0; ++t) {
+      if (out.targets[t].probe == p.id) match = static_cast<int>(t);
+    }
+    const bool own = p.requested_frequency_hz || p.requested_damping_ratio;  // the scene states its own
+    if (own && match < 0) continue;
+    std::string body;
+    modes::Dof dof{};
+    const bool body_probe = probe_coordinate(p, body, dof);
+    for (std::size_t t = 0; t < targets.size() && t < out.targets.size() && match < 0; ++t) {
+      std::string tb;
+      modes::Dof td{};
+      if (body_probe && named_coordinate(scene, targets[t], tb, td) && tb == body && td == dof) match = static_cast<int>(t);
+    }
+    if (match < 0 && !p.joint.empty() && grouped.contains(p.joint)) p.joint_request = false;
+    if (match < 0) continue;
+    p.joint_request = false;
+    p.requested_frequency_hz = out.targets[match].requested_frequency_hz;
+    p.requested_damping_ratio = out.targets[match].requested_damping_ratio;
+  }
+}
+
 bool settled_springs(const std::vector<SpringConstants>& a, const std::vector<SpringConstants>& b) {
   for (std::size_t g = 0; g < a.size(); ++g) {
     if (std::abs(std::log(a[g].stiffness / b[g].stiffness)) > kModalRoundTolerance) return false;
@@ -393,13 +443,23 @@ std::optional<FieldError> tune_modes(const Scene& scene, MassModel mass_model, M
     }
     if (settled && round >= kMinModalRounds) break;
   }
-  for (const ModalTargetResult& t : out.targets) {
-    const int p = find_id(tuned.probes, t.probe);
-    if (p < 0) continue;
-    tuned.probes[p].requested_frequency_hz = t.requested_frequency_hz;
-    tuned.probes[p].requested_damping_ratio = t.requested_damping_ratio;
-  }
+  set_probe_requests(scene, out, tuned);
   return std::nullopt;
+}
+
+void mark_solved_joints(const Scene& scene, const ModalTuningResult& modal, std::vector<JointTuning>& joints) {
+  for (const ModalGroupResult& g : modal.groups) {
+    for (const std::string& id : g.joints) {
+      for (JointTuning& t : joints) {
+        if (t.joint != id || !t.tuned) continue;
+        SolvedJoint solved{g.id, std::nullopt};
+        TuneRequest q = implicit_euler_request(t.model_mass, t.stiffness, t.damping, scene.world);
+        q.engine_settings = t.request.engine_settings;
+        if (!validate_tune_request(q)) solved.joint_export = tune(q);
+        t.solved = std::move(solved);
+      }
+    }
+  }
 }
 
 }  // namespace softtune::scene

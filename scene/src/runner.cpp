@@ -224,7 +224,7 @@ void fit_probes(const Scene& scene, std::vector<std::vector<double>>& samples, S
       diverged = o.diverged_at_s.has_value();
       if (!f_req) f_req = o.requested_frequency_hz;
       if (!zeta_req) zeta_req = o.requested_damping_ratio;
-    } else if (!probe.joint.empty() && probe.kind != ProbeKind::joint_error) {  // a rigid row has no request
+    } else if (!probe.joint.empty() && probe.kind != ProbeKind::joint_error && probe.joint_request) {  // a rigid row has no request
       const JointTuning& t = r.joints[find_joint_tuning(r.joints, probe.joint)];
       if (t.tuned) {
         if (!f_req) f_req = t.requested_frequency_hz;
@@ -283,6 +283,7 @@ SceneResult run_scene(const Scene& scene, const RunOptions& options) {
     run.stages.items.erase(run.stages.items.begin());  // its own validate: ran above
     r.stages.append(run.stages);
     run.stages = r.stages;
+    mark_solved_joints(tuned, modal, run.joints);
     run.modal_tuning = std::move(modal);
     return run;
   }

@@ -112,6 +112,25 @@ int joint_index(const Scene& s, const std::string& id) {
   return -1;
 }
 
+// A joint's typed values: what Box2D 2.4 accepts as a spring. It reads stiffness <= 0 as rigid, and builds
+// gamma = 1 / (h (damping + h stiffness)) (b2_wheel_joint.cpp InitVelocityConstraints), which must stay positive.
+std::optional<FieldError> check_typed(const Scene& s, const JointSettings& j, const std::string& path) {
+  const std::string def = std::string(box2d_joint_def(j.kind));
+  if (j.kind == JointKind::revolute) return FieldError{path + ".typed", "a revolute joint is a rigid pin: it has no spring to type"};
+  if (j.tuning) return FieldError{path + ".typed", "give either typed values or a tuning (response_frames / frequency_hz ...), not both"};
+  const TypedSpring& t = *j.typed;
+  const std::string unit = j.kind == JointKind::weld ? "N m/rad" : "N/m";
+  if (!(t.stiffness > 0.0 && t.stiffness <= limits::kMaxTypedStiffness))
+    return FieldError{path + ".typed." + def + "::stiffness", "must be in (0, 1e15] " + unit + " (Box2D 2.4 reads 0 as a rigid joint)"};
+  if (!(std::abs(t.damping) <= limits::kMaxTypedStiffness))
+    return FieldError{path + ".typed." + def + "::damping", "must be a finite number within +-1e15"};
+  const double h = 1.0 / (s.world.fps * s.world.substeps);
+  if (!(t.damping + h * t.stiffness > 0.0))
+    return FieldError{path + ".typed." + def + "::damping",
+                      "must exceed -h stiffness (h = 1 / (fps substeps)): Box2D 2.4's gamma = 1 / (h (damping + h stiffness)) must be positive"};
+  return std::nullopt;
+}
+
 std::optional<FieldError> check_joint(const Scene& s, const JointSettings& j, const std::string& path) {
   const int a = body_index(s, j.body_a), b = body_index(s, j.body_b);
   if (b < 0) return FieldError{path + ".body_b", "must name a body of this scene"};
@@ -130,10 +149,14 @@ std::optional<FieldError> check_joint(const Scene& s, const JointSettings& j, co
   if (!finite_vector(j.axis, 1e6) || j.axis.norm() < softtune::limits::kMinAxisLength)
     return FieldError{path + ".axis", "must be a finite, non-zero direction"};
   const bool needs_tuning = j.kind == JointKind::wheel || j.kind == JointKind::mouse;
-  if (needs_tuning && !j.tuning)
-    return FieldError{path + ".frequency_hz", "a " + std::string(joint_kind_name(j.kind)) + " joint must be tuned: give response_frames or frequency_hz"};
+  if (needs_tuning && !j.tuning && !j.typed)
+    return FieldError{path + ".frequency_hz", "a " + std::string(joint_kind_name(j.kind)) +
+                                                  " joint must be tuned: give response_frames or frequency_hz (or typed values)"};
   if (j.kind == JointKind::revolute && j.tuning)
     return FieldError{path + ".frequency_hz", "a revolute joint is a rigid pin and takes no tuning"};
+  if (j.typed) {
+    if (auto e = check_typed(s, j, path)) return e;
+  }
   if (j.kind == JointKind::distance) {
     if ((j.anchor_b - j.anchor_a).norm() < limits::kMinJointLength)
       return FieldError{path + ".anchor_b", "must be at least " + std::to_string(limits::kMinJointLength) + " m from anchor_a (the distance joint's axis)"};
@@ -301,6 +324,17 @@ std::string_view joint_kind_name(JointKind k) {
     case JointKind::revolute: return "revolute";
   }
   return "unknown";
+}
+
+std::string_view box2d_joint_def(JointKind k) {
+  switch (k) {
+    case JointKind::distance: return "b2DistanceJointDef";
+    case JointKind::wheel: return "b2WheelJointDef";
+    case JointKind::weld: return "b2WeldJointDef";
+    case JointKind::mouse: return "b2MouseJointDef";
+    case JointKind::revolute: return "b2RevoluteJointDef";
+  }
+  return "b2JointDef";
 }
 
 std::string_view mass_model_name(MassModel m) { return m == MassModel::effective ? "effective" : "box2d_reduced"; }

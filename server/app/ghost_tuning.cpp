@@ -19,11 +19,8 @@ scene::Scene ghost_scene(const scene::Scene& scene, const nlohmann::json& ghost)
   if (response_frames && frequency_hz) throw invalid_field("ghost.frequency_hz", "give response_frames or frequency_hz, not both");
   if (oscillation && damping_ratio) throw invalid_field("ghost.damping_ratio", "give oscillation or damping_ratio, not both");
   scene::Scene out = scene;
-  bool any = false;
-  for (scene::JointSettings& j : out.joints) {
-    if (!j.tuning) continue;
-    any = true;
-    TuneRequest& t = *j.tuning;
+  // One designer request retuned as the ghost asks, checked as the runner will (fps, substeps, a mass).
+  auto retune = [&](TuneRequest& t) {
     if (response_frames || frequency_hz) t.response_frames = response_frames, t.frequency_hz = frequency_hz;
     if (basis_fps) t.basis_fps = *basis_fps;
     if (oscillation || damping_ratio) {
@@ -31,14 +28,25 @@ scene::Scene ghost_scene(const scene::Scene& scene, const nlohmann::json& ghost)
       t.damping_ratio = damping_ratio;
     }
     if (mode) t.mode = static_cast<SoftMode>(*mode);
-    // The runner fills in fps, substeps and the effective mass; check the designer fields as it will.
     TuneRequest check = t;
     check.fps = scene.world.fps;
     check.substeps = scene.world.substeps;
     if (!check.effective_mass && !check.constraint) check.effective_mass = 1.0;
     if (auto e = validate_tune_request(check)) throw invalid_field("ghost." + e->field, e->rule);
+  };
+  bool any = false;
+  for (scene::JointSettings& j : out.joints) {
+    if (!j.tuning) continue;
+    any = true;
+    retune(*j.tuning);
   }
   if (!any) throw invalid_field("ghost", "the scene has no tuned joint to give a second tuning");
+  // A scene tuned by its modes: the ghost's request is its targets' (solved again for the ghost), and its
+  // mode the solve's, as apply_scene_tuning does for the page's own tuning.
+  if (out.modal_tuning) {
+    for (scene::ModeTargetSettings& target : out.modal_tuning->targets) retune(target.tuning);
+    if (mode) out.modal_tuning->mode = static_cast<SoftMode>(*mode);
+  }
   return out;
 }
 

@@ -13,6 +13,8 @@ namespace softtune::app {
 /// or `frequency_hz`, `basis_fps`, `oscillation` or `damping_ratio`, `mode` (the rest of each joint's
 /// tuning, its fps, substeps and effective mass, stays the scene's). Throws Problem (422) naming
 /// `ghost.<field>` for an unknown field or one out of range, or `ghost` when the scene has no tuned joint.
+/// A scene tuned by its modes takes the ghost's request on its mode targets too (and its mode for the solve),
+/// so the ghost runs its own modal solve rather than the scene's.
 scene::Scene ghost_scene(const scene::Scene& scene, const nlohmann::json& ghost);
 
 }  // namespace softtune::app

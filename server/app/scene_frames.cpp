@@ -62,7 +62,7 @@ void add_joint(render::DrawFrame& frame, const scene::Scene& scene, const scene:
       s.b_m = vec(js.anchor_b);
       s.rest_length_m = js.rest_length.value_or(0.0);
       s.current_length_m = js.current_length;
-      s.style = settings.tuning ? render::SpringStyle::coil : render::SpringStyle::rod;
+      s.style = settings.tuning || settings.typed ? render::SpringStyle::coil : render::SpringStyle::rod;
       frame.springs.push_back(s);
       frame.anchors.push_back({vec(js.anchor_a)});
       frame.anchors.push_back({vec(js.anchor_b)});
@@ -237,7 +237,7 @@ void add_ghost(render::DrawFrame& frame, const scene::Scene& ghost, const scene:
     frame.polygons.push_back(std::move(polygon));
   }
   for (std::size_t j = 0; j < snap.joints.size() && j < ghost.joints.size(); ++j) {
-    if (!ghost.joints[j].tuning) continue;
+    if (!ghost.joints[j].tuning && !ghost.joints[j].typed) continue;
     render::DrawFrame joint;
     add_joint(joint, ghost, snap, j);
     for (render::SpringShape& s : joint.springs) {

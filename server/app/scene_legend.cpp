@@ -71,14 +71,18 @@ std::vector<std::string> scene_legend(const scene::Scene& scene, const scene::Sc
   };
   std::vector<Group> unmeasured;
   for (const scene::JointTuning& t : result.joints) {
-    if (!t.tuned || grouped.contains(t.joint)) continue;
+    if (!t.soft() || grouped.contains(t.joint)) continue;
     const scene::ProbeResult* probe = nullptr;
     for (std::size_t i = 0; i < result.probes.size() && i < scene.probes.size(); ++i) {
       if (scene.probes[i].joint == t.joint && result.probes[i].measured.frequency_hz && !probe) probe = &result.probes[i];
     }
     char ask[96], line[200];
-    std::snprintf(ask, sizeof ask, "asked %.2f %s \u03b6 %.2f", t.requested_frequency_hz, t.angular ? "Hz (rot)" : "Hz",
-                  t.requested_damping_ratio);
+    if (t.typed) {  // the values as typed: nothing was asked, so the line says what they are
+      std::snprintf(ask, sizeof ask, "as typed k %.5g, c %.5g", t.stiffness, t.damping);
+    } else {
+      std::snprintf(ask, sizeof ask, "asked %.2f %s \u03b6 %.2f", t.requested_frequency_hz, t.angular ? "Hz (rot)" : "Hz",
+                    t.requested_damping_ratio);
+    }
     if (probe && probe->measured.damping_ratio) {
       std::snprintf(line, sizeof line, "%s: %s \u2192 measured %.2f, \u03b6 %.2f", t.joint.c_str(), ask,
                     *probe->measured.frequency_hz, *probe->measured.damping_ratio);

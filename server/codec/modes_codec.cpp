@@ -1,5 +1,6 @@
 #include "codec/modes_codec.h"
 
+#include "codec/joint_answer_codec.h"
 #include "codec/json_writer.h"
 #include "codec/list_reader.h"
 #include "codec/problem.h"
@@ -80,18 +81,22 @@ json modes_json(const std::vector<modes::Mode>& all, const std::vector<std::stri
   return out;
 }
 
-json modal_tuning_json(const ModalTuningResult& modal, const SceneResult& run) {
+json modal_tuning_json(const Scene& scene, const ModalTuningResult& modal, const SceneResult& run) {
   json groups = json::array(), joints = json::array(), targets = json::array();
   for (const ModalGroupResult& g : modal.groups) {
     groups.push_back({{"id", g.id}, {"joints", g.joints}, {"stiffness", number_or_null(g.stiffness)}, {"damping", number_or_null(g.damping)}});
     for (const std::string& id : g.joints) {
-      for (const JointTuning& t : run.joints) {
+      for (std::size_t i = 0; i < run.joints.size(); ++i) {
+        const JointTuning& t = run.joints[i];
         if (t.joint != id) continue;
-        // The joint's numbers as any tune gives them (softness and each engine's export of the same k, c).
-        const json tune = encode_tune_result(TuneRequest{}, t.result);
+        const json answer = scene_joint_json(scene, run, i);
+        // The joint's solved numbers, and each engine's values for them (joint_answer_codec.h: Box2D 2.4 the run's).
+        const json tune = t.solved && t.solved->joint_export ? encode_tune_result(TuneRequest{}, *t.solved->joint_export)
+                                                             : encode_tune_result(TuneRequest{}, t.result);
         joints.push_back({{"id", id}, {"group", g.id}, {"effective_mass", number_or_null(t.effective_mass)},
-                          {"k", tune["k"]}, {"c", tune["c"]}, {"gamma", tune["gamma"]}, {"beta", tune["beta"]},
-                          {"erp", tune["erp"]}, {"cfm", tune["cfm"]}, {"engines", tune["engines"]}, {"warnings", tune["warnings"]}});
+                          {"k", number_or_null(t.stiffness)}, {"c", number_or_null(t.damping)}, {"gamma", tune["gamma"]},
+                          {"beta", tune["beta"]}, {"erp", tune["erp"]}, {"cfm", tune["cfm"]},
+                          {"engines", answer["engines"]}, {"warnings", answer["warnings"]}});
       }
     }
   }
@@ -102,7 +107,8 @@ json modal_tuning_json(const ModalTuningResult& modal, const SceneResult& run) {
       error = {{"frequency", number_or_null(*p->measured.frequency_hz / t.requested_frequency_hz - 1.0)},
                {"damping_ratio", number_or_null(*p->measured.damping_ratio - t.requested_damping_ratio)}};
     }
-    targets.push_back({{"mode", t.mode}, {"probe", t.probe.empty() ? json() : json(t.probe)},
+    const json why = measured.is_null() ? target_measurement(run, t)["why"] : json();
+    targets.push_back({{"mode", t.mode}, {"probe", t.probe.empty() ? json() : json(t.probe)}, {"unmeasured", why},
                        {"requested", {{"frequency_hz", number_or_null(t.requested_frequency_hz)}, {"damping_ratio", number_or_null(t.requested_damping_ratio)}}},
                        {"predicted", pole_json(t.predicted)}, {"continuous", pole_json(t.continuous)}, {"discrete", pole_json(t.discrete)},
                        {"measured", std::move(measured)}, {"error", std::move(error)}});

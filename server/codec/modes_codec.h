@@ -25,7 +25,7 @@ nlohmann::json modes_json(const std::vector<modes::Mode>& modes, const std::vect
 
 /// A run's modal tuning: groups (k, c), joints (k, c, gamma, beta, engines), targets (requested, predicted,
 /// measured by the probe's fit, error), residual, least_squares, iterations, at_s, settled, modes.
-nlohmann::json modal_tuning_json(const scene::ModalTuningResult& modal, const scene::SceneResult& run);
+nlohmann::json modal_tuning_json(const scene::Scene& scene, const scene::ModalTuningResult& modal, const scene::SceneResult& run);
 
 /// The modes answer: name, at_s, settled, h, contact_points, balance_residual, stages, modes.
 nlohmann::json linearisation_json(const std::string& name, const scene::LinearisedScene& lin,

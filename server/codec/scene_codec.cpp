@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "codec/json_reader.h"
+#include "codec/joint_answer_codec.h"
 #include "codec/json_writer.h"
 #include "codec/modes_codec.h"
 #include "codec/list_reader.h"
@@ -136,6 +137,7 @@ JointSettings read_joint(ObjectReader& r, const std::string& path) {
   if (auto v = r.number("motor_start_s")) j.motor_start_s = *v;
   j.collide_connected = read_bool(r, "collide_connected", false);
   j.tuning = read_designer_fields(r, path);
+  j.typed = read_typed(r, path, j);
   return j;
 }
 
@@ -204,23 +206,6 @@ Expectation read_expectation(ObjectReader& r) {
 }
 
 json vec2_json(const Eigen::Vector2d& v) { return json::array({number_or_null(v.x()), number_or_null(v.y())}); }
-
-json joint_json(const Scene& scene, const JointTuning& t, std::size_t i) {
-  json j = {{"id", t.joint}, {"type", joint_kind_name(scene.joints[i].kind)}, {"tuned", t.tuned},
-            {"angular", t.angular}, {"effective_mass", number_or_null(t.effective_mass)},
-            {"box2d_reduced_mass", number_or_null(t.box2d_reduced_mass)}};
-  if (!t.tuned) return j;
-  j["mass_model"] = mass_model_name(t.mass_model);
-  j["model_mass"] = number_or_null(t.model_mass);
-  j["stiffness"] = number_or_null(t.stiffness);
-  j["damping"] = number_or_null(t.damping);
-  j["requested"] = {{"frequency_hz", number_or_null(t.requested_frequency_hz)}, {"damping_ratio", number_or_null(t.requested_damping_ratio)}};
-  j["predicted_frequency_hz"] = number_or_null(t.predicted_frequency_hz);
-  j["achieved_frequency_hz"] = number_or_null(t.result.achieved_frequency_hz);
-  j["fell_back_to_standard"] = t.fell_back_to_standard;
-  j["warnings"] = warnings_json(t.result.warnings);
-  return j;
-}
 
 json series_json(const std::vector<double>& values) {
   json out = json::array();
@@ -311,7 +296,7 @@ Scene decode_scene(const json& doc) {
 json encode_scene_result(const Scene& scene, const SceneResult& r) {
   if (r.error) throw_field_error(*r.error);
   json joints = json::array(), oscillators = json::array(), probes = json::array();
-  for (std::size_t i = 0; i < r.joints.size(); ++i) joints.push_back(joint_json(scene, r.joints[i], i));
+  for (std::size_t i = 0; i < r.joints.size(); ++i) joints.push_back(scene_joint_json(scene, r, i));
   for (const OscillatorRun& o : r.oscillators) {
     oscillators.push_back({{"id", o.id}, {"method", method_name(o.method)}, {"effective_mass", number_or_null(o.tuning.effective_mass)},
                            {"stiffness", number_or_null(o.tuning.standard_spring.stiffness)},
@@ -335,7 +320,7 @@ json encode_scene_result(const Scene& scene, const SceneResult& r) {
       {"camera", {{"center", vec2_json(scene.camera.center)}, {"width_m", number_or_null(scene.camera.width_m)},
                   {"fit", scene.camera.fit}, {"follow", scene.camera.follow}}},
   };
-  if (r.modal_tuning) out["modal_tuning"] = modal_tuning_json(*r.modal_tuning, r);
+  if (r.modal_tuning) out["modal_tuning"] = modal_tuning_json(scene, *r.modal_tuning, r);
   if (!r.snapshots.empty()) {
     json frames = json::array();
     for (const Snapshot& s : r.snapshots) frames.push_back(snapshot_json(s));

@@ -75,5 +75,25 @@ TEST(GhostTuning, BadFieldsAreNamedUnderGhost) {
   EXPECT_EQ(field_of(chain, {{"response_frames", 10}}), "ghost");
 }
 
+// On a modally tuned preset the ghost is its own solve: its mode target takes the ghost's request, and the
+// ghost's run measures the chassis heave there (40 frames at 60 fps = 1.5 Hz), not the first run's 3 Hz.
+TEST(GhostTuning, AModalSceneSolvesTheGhostsOwnTarget) {
+  const scene::Scene a = codec::decode_scene(load_preset(SOFTTUNE_PRESETS_DIR, "vehicle"));
+  const scene::Scene b = ghost_scene(a, {{"response_frames", 40}, {"oscillation", "some"}, {"mode", "exact"}});
+  ASSERT_TRUE(b.modal_tuning);
+  EXPECT_EQ(*b.modal_tuning->targets[0].tuning.response_frames, 40.0);
+  const scene::SceneResult run_a = scene::run_scene(a), run_b = scene::run_scene(b);
+  ASSERT_FALSE(run_a.error);
+  ASSERT_FALSE(run_b.error);
+  ASSERT_TRUE(run_b.modal_tuning);
+  EXPECT_NEAR(run_b.modal_tuning->targets[0].requested_frequency_hz, 1.5, 1e-12);
+  EXPECT_LT(run_b.modal_tuning->groups[0].stiffness, 0.5 * run_a.modal_tuning->groups[0].stiffness);
+  for (const scene::ProbeResult& p : run_b.probes) {
+    if (p.id != "heave") continue;
+    ASSERT_TRUE(p.measured.frequency_hz);
+    EXPECT_NEAR(*p.measured.frequency_hz / 1.5, 1.0, 0.03);
+  }
+}
+
 }  // namespace
 }  // namespace softtune::app

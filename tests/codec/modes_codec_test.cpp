@@ -84,11 +84,11 @@ TEST(ModesCodec, TargetIsMeasuredByItsProbe) {
   p.measured.frequency_hz = 3.03;
   p.measured.damping_ratio = 0.48;
   run.probes = {p};
-  const json out = modal_tuning_json(modal, run);
+  const json out = modal_tuning_json(scene::Scene{}, modal, run);
   EXPECT_NEAR(out["targets"][0]["error"]["frequency"].get<double>(), 0.01, 1e-12);
   EXPECT_NEAR(out["targets"][0]["error"]["damping_ratio"].get<double>(), -0.02, 1e-12);
   modal.targets[0].probe = "";
-  EXPECT_TRUE(modal_tuning_json(modal, run)["targets"][0]["measured"].is_null());
+  EXPECT_TRUE(modal_tuning_json(scene::Scene{}, modal, run)["targets"][0]["measured"].is_null());
 }
 
 }  // namespace

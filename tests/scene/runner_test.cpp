@@ -28,6 +28,28 @@ TEST(SceneRunner, Box2DSoftJointIsTheCoreSoftStep) {
   }
 }
 
+// A joint as typed (no tuning): Box2D runs exactly the typed k, c -- implicit Euler on (m, k, c), written out
+// here: v' = (m v - h k x) / (m + h c + h^2 k), x' = x + h v' -- and nothing is asked of it.
+TEST(SceneRunner, TypedJointRunsTheTypedValues) {
+  Scene s = hanging_weight(2.0, Oscillation::free);
+  s.oscillators.clear();
+  s.probes.resize(1);
+  const double k = 300.0, c = 4.0, m = 1.0, h = 1.0 / 60.0;
+  s.joints[0].tuning.reset();
+  s.joints[0].typed = TypedSpring{k, c};
+  const SceneResult r = run_scene(s);
+  ASSERT_FALSE(r.error);
+  EXPECT_TRUE(r.joints[0].typed);
+  EXPECT_FALSE(r.joints[0].tuned);
+  EXPECT_FALSE(r.probes[0].requested_frequency_hz);
+  double x = 0.1, v = 0.0;  // stretched 0.1 m below rest, displacement measured upward
+  for (std::size_t n = 0; n < r.probes[0].value.size(); ++n) {
+    EXPECT_NEAR(-r.probes[0].value[n], 0.1 - x, 2e-6) << "frame " << n;
+    v = (m * v - h * k * x) / (m + h * c + h * h * k);
+    x += h * v;
+  }
+}
+
 TEST(SceneRunner, SameSceneTwiceGivesIdenticalTrajectories) {
   const Scene s = buddhas({0.3, 0.8});
   const SceneResult a = run_scene(s), b = run_scene(s);

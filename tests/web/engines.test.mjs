@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  decimal, engineKeys, engineSnippet, engineWarnings, formatDifference, legacyFields, legacySnippet, notesFor, shortName, verdict,
+  comparedTo, decimal, engineKeys, engineSnippet, engineWarnings, formatDifference, legacyFields, legacySnippet, notesFor, shortName, verdict,
 } from '../../web/engines.js';
 
 const requested = { frequency_hz: 5, damping_ratio: 0.5 };
@@ -46,6 +46,39 @@ test('Box2D 2.4 (C++): b2DistanceJointDef fields and the step, exact or plain, a
   const wheel = snippet('box2d_v2_4', { ...report, settings: { joint: 'wheel', velocityIterations: 3 } });
   assert.match(wheel, /^b2WheelJointDef jd;$/m);
   assert.match(wheel, /world\.Step\(0\.016666666666666666f, 3, 3\);/);
+});
+
+test('a solved scene joint: its own def from its values, its note, and each prediction against what the answer names', () => {
+  // The shape of a simulate answer's joints[].answer.engines for a wheel joint a modal tuning solved
+  // (server/codec/joint_answer_codec.cpp): Box2D 2.4 the run's k, c measured on the mode, Jolt a per-joint model.
+  const tune = {
+    h: 1 / 60, requested: { frequency_hz: 3, damping_ratio: 0.5, mode: 'chassis heave' },
+    engines: {
+      box2d_v2_4: {
+        settings: { joint: 'wheel', velocityIterations: 8 }, basis: 'scene_run', note: 'the values the scene ran in Box2D 2.4, measured on chassis heave',
+        parameters: { 'b2WheelJointDef::stiffness': 24842.07, 'b2WheelJointDef::damping': 914.753 },
+        exact: { 'b2WheelJointDef::stiffness': 24842.07, 'b2WheelJointDef::damping': 914.753 },
+        predicted: ok(3.003, 0.499), exact_predicted: ok(3.003, 0.499), warnings: [],
+      },
+      jolt: { basis: 'per_joint_model', compared_to: { frequency_hz: 7.44, damping_ratio: 0.86 }, predicted: ok(7.44, 0.86) },
+    },
+  };
+  const text = engineSnippet('box2d_v2_4', tune.engines.box2d_v2_4, tune, 'exact');
+  assert.equal(text, [
+    '// Box2D 2.4 (C++), exact values: predicted 3.003 Hz, damping ratio 0.499',
+    '// the values the scene ran in Box2D 2.4, measured on chassis heave',
+    'b2WheelJointDef jd;',
+    'jd.stiffness = 24842.07f;  // N/m',
+    'jd.damping = 914.753f;  // N s/m',
+    'world.Step(0.016666666666666666f, 8, 3);  // timeStep, velocityIterations, positionIterations',
+  ].join('\n'));
+  // A scene's weld joint: the answer names its def in its settings and values.
+  const weld = { settings: { joint: 'weld' }, parameters: { 'b2WeldJointDef::stiffness': 12.5, 'b2WeldJointDef::damping': 0.25 }, predicted: ok(2, 0.3) };
+  assert.match(engineSnippet('box2d_v2_4', weld, { h: 1 / 60, requested }, 'plain'), /^b2WeldJointDef jd;$/m);
+  // The per-joint model is held against Box2D 2.4's joint alone, not against the mode.
+  assert.equal(comparedTo(tune.engines.jolt, tune), tune.engines.jolt.compared_to);
+  assert.equal(verdict(tune.engines.jolt.predicted, comparedTo(tune.engines.jolt, tune)).frequencyError, 0);
+  assert.equal(comparedTo(tune.engines.box2d_v2_4, tune), tune.requested);
 });
 
 test('Box2D v3 (C): b2DefaultDistanceJointDef, enableSpring, hertz, dampingRatio and b2World_Step with subStepCount', () => {

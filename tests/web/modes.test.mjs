@@ -5,7 +5,9 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { SPRINGS, modalScene, modeArrows, modeTarget, parseTarget, sceneTarget, targetKey, targetedScene } from '../../web/modes.js';
+import {
+  SPRINGS, modalScene, modeArrows, modesOfAnswer, modeTarget, parseTarget, sceneTarget, showModes, solvedAnswer, targetKey, targetedScene,
+} from '../../web/modes.js';
 
 const softtune = process.env.SOFTTUNE_BIN ?? 'build/softtune';
 const presets = new URL('../../presets/', import.meta.url);
@@ -55,4 +57,37 @@ test('a pick is a control value that names the body and its motion, and picks th
   assert.ok(scene.modal_tuning, 'the preset itself is left alone');
   const pitch = targetedScene(scene, { response_frames: 30, oscillation: 'none' }, 'chassis.pitch').modal_tuning;
   assert.deepEqual(pitch.targets, [{ response_frames: 30, oscillation: 'none', body: 'chassis', mode: 'pitch' }]);
+});
+
+// The modes list follows every answer (a modal tuning carries the solved system's modes), and a simulate
+// answer's solved joint is what the page's numbers show; a pick's label is the target it makes.
+test('the modes follow the simulate answer, its solved joint answers, and a label names its pick', () => {
+  const vehicle = run(['simulate', '--request', '-'], { preset: 'vehicle' });
+  const listing = modesOfAnswer(vehicle);
+  assert.equal(listing.modes, vehicle.modal_tuning.modes);
+  assert.equal(listing.at_s, vehicle.modal_tuning.at_s);
+  assert.equal(modesOfAnswer(run(['simulate', '--request', '-'], { preset: 'vehicle_per_spring' })), null);
+  const answer = solvedAnswer(vehicle, 'front_suspension');
+  assert.equal(answer.joint, 'front_suspension');
+  assert.equal(answer.k, vehicle.modal_tuning.groups[0].stiffness);
+  assert.equal(answer.requested.mode, 'chassis heave');
+  assert.equal(solvedAnswer(vehicle, 'no_such_joint').joint, 'rear_suspension');  // the first solved joint
+  // A mode named for one body by its energy, led in amplitude by another: the radio's label names the pick.
+  const created = [];
+  const node = (name) => {
+    const e = { name, attrs: {}, children: [], textContent: '', dataset: {}, className: '' };
+    e.setAttribute = (k, v) => { e.attrs[k] = v; };
+    e.appendChild = (c) => { e.children.push(c); return c; };
+    e.append = (...cs) => { e.children.push(...cs); };
+    e.replaceChildren = () => { e.children = []; };
+    created.push(e);
+    return e;
+  };
+  const doc = { createElement: node, createElementNS: (_, name) => node(name) };
+  const panel = node('div');
+  showModes(panel, { at_s: 1, settled: true, modes: [{ name: 'plank_2 heave', discrete: { frequency_hz: 2, damping_ratio: 0.5 },
+    components: [{ body: 'plank_1', coordinate: 'y', motion: 'heave', amplitude: 1 }] }] }, 'plank_1.heave', doc);
+  const labels = created.filter((e) => e.name === 'label').map((e) => e.children.filter((c) => typeof c === 'string').join(''));
+  assert.ok(labels.some((l) => l.startsWith(' plank_1 heave: 2.000 Hz')), labels.join(' | '));
+  assert.ok(!labels.some((l) => l.includes('plank_2')), labels.join(' | '));
 });

@@ -434,6 +434,24 @@ test('a preset tuned by its modes starts on its own mode, and a pick reaches the
   assert.equal(await page.getByTestId('summary-frequency').textContent(), `3 → ${Number(measured.toPrecision(6))} Hz`);
   assert.match(await page.getByTestId('summary-verdict').textContent(), /chassis heave$/);
   assert.match(await page.locator('#joint-note').textContent(), /The sliders tune the chassis heave/);
+  // One truth from solve to copy (issue 30): the Numbers, the engine table and its Copy snippet hold the solved
+  // k and c the summary bar shows, on the wheel joint's own def, and what they achieve is the heave measured.
+  const group = heave.groups[0];
+  await page.waitForFunction((k) => Number(document.querySelector('#results [data-testid="k"]')?.dataset.value) === k,
+    group.stiffness, { timeout: 20000 });
+  assert.equal(await page.getByTestId('summary-k').textContent(), await page.locator('#results [data-testid="k"]').textContent());
+  assert.equal(await page.getByTestId('summary-c').textContent(), await page.locator('#results [data-testid="c"]').textContent());
+  assert.equal(Number(await page.locator('#results [data-testid="c"]').getAttribute('data-value')), group.damping);
+  assert.equal(Number(await page.locator('#results [data-testid="requested-frequency"]').getAttribute('data-value')), 3);
+  const wheel = page.locator('#engines tr.engine[data-engine="box2d_v2_4"]');
+  assert.equal(Number(await wheel.getByTestId('predicted-frequency').getAttribute('data-value')), measured);
+  await wheel.locator('button').click();
+  const snippet = await page.evaluate(() => navigator.clipboard.readText());
+  assert.ok(snippet.includes('b2WheelJointDef jd;'), snippet);
+  assert.ok(snippet.includes(`jd.stiffness = ${group.stiffness}f;`), snippet);
+  assert.ok(snippet.includes(`jd.damping = ${group.damping}f;`), snippet);
+  assert.doesNotMatch(snippet, /b2DistanceJointDef/);
+  assert.equal(await page.locator('#engines tr.engine[data-engine="jolt"] [data-testid="engine-basis"]').getAttribute('data-basis'), 'per_joint_model');
 
   // Each spring on its own mass: the preview runs the scene without modal tuning, and the URL keeps the pick.
   await page.locator('input[name="target"][value="springs"]').check();

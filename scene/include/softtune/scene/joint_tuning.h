@@ -18,14 +18,27 @@
 
 #include "softtune/diagnostics.h"
 #include "softtune/effective_mass.h"
+#include "softtune/engines/engine_model.h"
 #include "softtune/scene/scene.h"
 #include "softtune/tune.h"
 
 namespace softtune::scene {
 
+/// A joint a modal tuning solved (modal_tuning.h): what it serves, and the engines' answer for its solved k, c.
+struct SolvedJoint {
+  std::string group;                     ///< the group whose shared k, c it carries
+  /// The engines' answer (TuneResult::engine_reports) for the joint alone as Box2D 2.4 runs it with the solved
+  /// k, c: the exact request of the poles implicit Euler has with (model mass, k, c) at the step, so each
+  /// engine's `parameters` is its form of k, c and its `exact` the values that make its joint do, alone, what
+  /// Box2D 2.4's does (a per-joint model: the scene itself runs in Box2D 2.4 only). Empty when that request
+  /// is outside the tune contract.
+  std::optional<TuneResult> joint_export;
+};
+
 struct JointTuning {
   std::string joint;                     ///< joint id
-  bool tuned = false;                    ///< false: a rigid joint, nothing below applies
+  bool tuned = false;                    ///< false: a rigid joint or a typed one (below), no request applies
+  bool typed = false;                    ///< run with the values as typed (JointSettings::typed), not tuned
   bool angular = false;                  ///< weld: k in N m/rad, c in N m s/rad, masses in kg m^2
   MassModel mass_model = MassModel::effective;
   double effective_mass = 0.0;           ///< kg (kg m^2), 1 / K of the joint at the start
@@ -38,8 +51,22 @@ struct JointTuning {
   /// The frequency this k gives on the true effective mass: f sqrt(model_mass / effective_mass), Hz.
   double predicted_frequency_hz = 0.0;
   bool fell_back_to_standard = false;    ///< exact mode had no finite gamma (zeta = 0): standard k, c used
+  TuneRequest request;                   ///< the request tune() ran (fps, substeps, mass and engine settings filled in)
   TuneResult result;                     ///< the core's full answer (warnings, stages, softness)
+  std::optional<SolvedJoint> solved;     ///< set when a modal tuning solved this joint's k, c
+  /// Whether Box2D 2.4 runs this joint as a spring (tuned or typed) rather than a rigid row.
+  bool soft() const { return tuned || typed; }
 };
+
+/// The Box2D 2.4 model's settings (core/src/engines/box2d_v2_4.cpp) for this joint: its def (distance, wheel,
+/// mouse), the world's velocity iterations and, for a mouse joint, the share of 1/m_eff that is body B's
+/// rotation, iB (rB x n)^2 m_eff, on which b2MouseJoint's 0.98 angular damping acts.
+engines::SettingValues box2d_joint_settings(const JointSettings& joint, const Constraint2D& constraint, const WorldSettings& world);
+
+/// The exact request whose poles are implicit Euler's with (m, k, c) at the step h (fps, substeps from
+/// `world`): (m + c h + k h^2) z^2 - (2 m + c h) z + m = 0. exact_spring() maps it back to exactly k, c, so it
+/// is how a solved k, c is handed to a joint (modal_tuning.cpp) and how its engines' answer is asked.
+TuneRequest implicit_euler_request(double m, double k, double c, const WorldSettings& world);
 
 /// The core constraint Box2D solves for this joint, from the bodies' mass data at the start.
 Constraint2D joint_constraint(const JointSettings& joint, const Body2D& body_a, const Body2D& body_b);

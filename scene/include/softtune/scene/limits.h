@@ -25,5 +25,7 @@ inline constexpr std::size_t kMaxIdLength = 64;
 inline constexpr std::size_t kMaxModeTargets = 16, kMaxJointGroups = 16;
 /// Dynamic bodies a linearisation takes (3 coordinates each): the SVD and the 6n x 6n eigenproblem grow as n^3.
 inline constexpr std::size_t kMaxModeBodies = 100;
+/// N/m (weld: N m/rad), and N s/m for |damping|: a joint's typed values (Box2D 2.4 stores them as float).
+inline constexpr double kMaxTypedStiffness = 1.0e15;
 inline constexpr std::size_t kMaxRates = 16;             ///< entries of rates.fps, rates.substeps and an expectation's fps, substeps
 }  // namespace softtune::scene::limits

@@ -15,6 +15,7 @@
 
 #include "softtune/diagnostics.h"
 #include "softtune/modal_tune.h"
+#include "softtune/scene/joint_tuning.h"
 #include "softtune/scene/linearise.h"
 #include "softtune/scene/scene.h"
 
@@ -72,6 +73,10 @@ std::optional<FieldError> validate_modal_tuning(const Scene& scene);
 /// Refusals name the field ("modal_tuning.targets.1").
 std::optional<FieldError> tune_modes(const Scene& scene, MassModel mass_model, ModalTuningResult& out, Scene& tuned,
                                      StageList& stages);
+
+/// Marks each joint of the run that a group of `modal` solved (JointTuning::solved) and asks the engines'
+/// answer for its solved k, c (SolvedJoint::joint_export); `scene` is the one that ran (its world's step).
+void mark_solved_joints(const Scene& scene, const ModalTuningResult& modal, std::vector<JointTuning>& joints);
 
 /// The model body and coordinate a target means (its probe's body and axis, or body + motion); false when
 /// the probe measures no body coordinate.

@@ -53,6 +53,14 @@ enum class MassModel {
   box2d_reduced,  ///< what b2LinearStiffness / b2AngularStiffness use: mA mB / (mA + mB), rotation ignored
 };
 
+/// A joint's spring as the designer typed it into Box2D 2.4 (`typed` in a scene document, under the joint def's
+/// own names: "b2WheelJointDef::stiffness", "b2WheelJointDef::damping"; a mouse joint's "b2MouseJointDef::maxForce"
+/// is its max_force). Such a joint is not tuned: the scene runs these values and measures what they do.
+struct TypedSpring {
+  double stiffness = 0.0;                  ///< N/m (weld: N m/rad), > 0
+  double damping = 0.0;                    ///< N s/m (weld: N m s/rad); damping + h stiffness > 0 (Box2D's gamma)
+};
+
 struct JointSettings {
   std::string id;
   JointKind kind = JointKind::distance;
@@ -71,7 +79,15 @@ struct JointSettings {
   /// The designer's tuning (response_frames / frequency_hz, oscillation / damping_ratio, mode); fps, substeps
   /// and the effective mass are filled in by the runner. Empty: a rigid joint.
   std::optional<TuneRequest> tuning;
+  std::optional<TypedSpring> typed;        ///< the values as typed instead of a tuning (never both)
+  /// Set by a modal tuning (modal_tuning.cpp), never decoded: the group's solved k, c, given to Box2D as they
+  /// are; `tuning` then holds their equivalent request on the joint's own mass (its softness, its engines).
+  std::optional<SpringConstants> solved_spring;
 };
+
+/// The Box2D 2.4 joint def a joint kind is built from ("b2WheelJointDef"), whose names `typed` and the
+/// answer's engines.box2d_v2_4.parameters use.
+std::string_view box2d_joint_def(JointKind k);
 
 /// A 1-D oscillator run on the core integrators only (no Box2D): the talk's first scene, and the explicit /
 /// semi-implicit comparison of the stiff scene.
@@ -106,6 +122,9 @@ struct ProbeSettings {
   std::optional<double> to_s;              ///< s, end of the window (default: the end of the run)
   std::optional<double> requested_frequency_hz;  ///< Hz, when no tuned joint states the request
   std::optional<double> requested_damping_ratio;
+  /// false: the probe's joint carries a modal solve, whose per-joint equivalent request is nothing the designer
+  /// asked; the probe is compared with its target's request (set above by modal_tuning.cpp) or with none.
+  bool joint_request = true;
 };
 
 enum class Metric {
