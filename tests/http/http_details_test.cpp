@@ -245,4 +245,18 @@ TEST(HttpDetails, A414CarriesCorsHeaders) {
   EXPECT_NE(head_of(r).find("\r\nAccess-Control-Allow-Origin: https://tools.example\r\n"), std::string::npos) << head_of(r);
 }
 
+// GET /metrics says what each cache holds: the tune responses once one is cached.
+TEST(HttpDetails, MetricsReportEachCachesSize) {
+  TestServer s;
+  auto c = s.client();
+  ASSERT_TRUE(c.Post("/api/v1/tune", kTune, "application/json"));
+  auto m = c.Get("/metrics");
+  ASSERT_TRUE(m);
+  const std::string line = "softtune_cache_entries{cache=\"tune\"} ";
+  const std::size_t at = m->body.find(line);
+  ASSERT_NE(at, std::string::npos) << m->body;
+  EXPECT_GE(std::stoul(m->body.substr(at + line.size())), 1u);  // the canonical request and its spelling
+  EXPECT_NE(m->body.find("\nsofttune_resident_bytes "), std::string::npos);
+}
+
 }  // namespace http_details_test
