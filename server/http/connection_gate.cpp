@@ -1,7 +1,5 @@
 #include "http/connection_gate.h"
 
-#include "http/request_framing.h"
-
 #include <sys/epoll.h>
 #include <sys/eventfd.h>
 #include <sys/resource.h>
@@ -19,6 +17,8 @@
 #include <thread>
 #include <unordered_map>
 #include <vector>
+
+#include "http/request_framing.h"
 
 namespace softtune::http {
 namespace {

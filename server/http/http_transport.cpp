@@ -57,6 +57,7 @@
 #include <poll.h>
 #include <sys/socket.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -307,9 +308,10 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
   s.set_pre_routing_handler([&service = impl_->service](const httplib::Request& req, httplib::Response& res) {
     if (t_connection) {
       t_connection->head_done = true;
-      // What the gate did not buffer (the request policy below has checked the length's form).
+      // For a body the gate did not buffer. The request policy below checks the length; a longer one is
+      // refused unread, so the bound here only keeps the arithmetic in range.
       const std::size_t length = std::strtoull(req.get_header_value("Content-Length").c_str(), nullptr, 10);
-      t_connection->body_deadline = body_deadline(Clock::now(), length);
+      t_connection->body_deadline = body_deadline(Clock::now(), std::min<std::size_t>(length, limits::kMaxBodyBytes));
     }
     if (auto refusal = head_refusal(req)) {
       service.add_cors(origin_of(req), *refusal);
