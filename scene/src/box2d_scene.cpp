@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "softtune/designer.h"
+#include "softtune/support/run_limit.h"
 
 namespace softtune::scene {
 namespace {
@@ -179,6 +180,9 @@ Box2DScene::Box2DScene(const Scene& scene, MassModel model) : scene_(scene) {
 }
 
 void Box2DScene::step_frame(int frame) {
+  // A request's or job's run-time limit (softtune/support/run_limit.h): a crowded scene's frame can take
+  // 0.1-0.3 s, so the limit is checked every frame, and the run ends within one frame of it.
+  support::check_run_limit();
   const WorldSettings& w = scene_.world;
   const double t = frame / w.fps;
   for (std::size_t i = 0; i < joints_.size(); ++i) {

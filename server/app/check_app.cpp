@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -13,6 +14,7 @@
 #include "codec/json_writer.h"
 #include "codec/problem.h"
 #include "codec/scene_codec.h"
+#include "softtune/support/run_limit.h"
 
 namespace softtune::app {
 
@@ -66,6 +68,8 @@ CaseResult run_case(const Prepared& p, const Job& job, const CheckOptions& optio
     }
   } catch (const Problem& e) {
     c.problem = problem_json(e);
+  } catch (const support::RunStopped&) {
+    throw;  // the whole request stops (run_check)
   } catch (const std::exception& e) {
     // A worker thread must never let an exception escape; this case fails, the others still run.
     c.problem = problem_json(Problem(500, "Internal error", "", e.what()));
@@ -199,11 +203,19 @@ CheckReport run_checks(const std::vector<CheckInput>& all_inputs, const CheckOpt
   report.cases.resize(jobs.size());
   std::atomic<std::size_t> next{0};
   if (options.progress) options.progress->set_total(jobs.size());
+  // A run-time limit (softtune/support/run_limit.h) is the calling thread's: when it stops a case, the
+  // other threads take no more cases, and it is rethrown once they are joined.
+  std::exception_ptr stopped;
   auto work = [&] {
-    for (std::size_t i = next++; i < jobs.size(); i = next++) {
-      const std::size_t k = order[i];
-      report.cases[k] = run_case(prepared[jobs[k].prepared], jobs[k], options);
-      if (options.progress && !options.progress->advance()) next.store(jobs.size());
+    try {
+      for (std::size_t i = next++; i < jobs.size(); i = next++) {
+        const std::size_t k = order[i];
+        report.cases[k] = run_case(prepared[jobs[k].prepared], jobs[k], options);
+        if (options.progress && !options.progress->advance()) next.store(jobs.size());
+      }
+    } catch (const support::RunStopped&) {
+      stopped = std::current_exception();
+      next.store(jobs.size());
     }
   };
   const int threads = std::clamp(options.jobs, 1, std::min<int>(kMaxCheckJobs, static_cast<int>(std::max<std::size_t>(1, jobs.size()))));
@@ -211,6 +223,7 @@ CheckReport run_checks(const std::vector<CheckInput>& all_inputs, const CheckOpt
   for (int t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
   for (std::thread& t : pool) t.join();
+  if (stopped) std::rethrow_exception(stopped);
 
   for (const CaseResult& c : report.cases) report.passed = report.passed && c.passed;
   return report;

@@ -21,6 +21,9 @@ class JobProgress {
   bool cancelled() const { return cancelled_.load(); }
   std::size_t done() const { return done_.load(); }
   std::size_t total() const { return total_.load(); }
+  /// The flag cancel() sets, for a run-time limit (softtune/support/run_limit.h) that stops the work within
+  /// one unit (a scene frame, a sweep case) rather than at the next advance().
+  const std::atomic<bool>& cancel_flag() const { return cancelled_; }
 
  private:
   std::atomic<std::size_t> done_{0}, total_{0};

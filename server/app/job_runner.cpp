@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <random>
 
+#include "app/budgets.h"
 #include "codec/problem.h"
+#include "softtune/support/run_limit.h"
 
 namespace softtune::app {
 
@@ -138,6 +140,11 @@ bool JobRunner::cancel(const std::string& id) {
   return true;
 }
 
+std::pair<std::size_t, std::size_t> JobRunner::kept() const {
+  const std::lock_guard lock(mutex_);
+  return {finished_.size(), kept_bytes_};
+}
+
 void JobRunner::run() {
   for (;;) {
     std::shared_ptr<Job> job;
@@ -155,10 +162,19 @@ void JobRunner::run() {
     std::optional<json> problem;
     try {
       // Kept as text: a sweep's tree of a few million nodes is several times its text.
+      // Held at run time too: twice the job budget of CPU time, and its cancel flag between frames and cases.
+      const support::ScopedRunLimit limit({2.0 * budgets::kJobCpuSeconds, &job->progress.cancel_flag(), nullptr});
       result = job->work(job->progress).dump();
       if (job->progress.cancelled()) state = JobState::cancelled, result.reset();
     } catch (const JobCancelled&) {
       state = JobState::cancelled;
+    } catch (const support::RunStopped& stopped) {
+      state = stopped.why == support::RunStopped::Why::cancelled ? JobState::cancelled : JobState::failed;
+      if (state == JobState::failed) {
+        problem = codec::problem_json(codec::Problem(422, "Request over budget", "",
+                                                     "the job was stopped after " + std::to_string(stopped.cpu_seconds) +
+                                                         " s of CPU time, past twice its budget"));
+      }
     } catch (const codec::Problem& p) {
       state = JobState::failed;
       problem = codec::problem_json(p);

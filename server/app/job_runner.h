@@ -67,6 +67,8 @@ class JobRunner {
   std::optional<std::string> status(const std::string& id);
   /// Cancels a queued or running job (a running one stops at its next progress point); false when unknown.
   bool cancel(const std::string& id);
+  /// Finished jobs kept and the bytes of their results (GET /metrics).
+  std::pair<std::size_t, std::size_t> kept() const;
 
  private:
   struct Job {
@@ -84,7 +86,7 @@ class JobRunner {
 
   const JobLimits limits_;
   const std::function<void()> after_job_;
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::map<std::string, std::shared_ptr<Job>> jobs_;
   std::deque<std::shared_ptr<Job>> queue_;

@@ -60,6 +60,7 @@ class PreviewService {
   std::optional<std::string> clip(const std::string& id, render::ClipFormat format);
 
   support::LruStats cache_stats() const { return pipeline_.cache_stats(); }
+  support::LruStats clip_cache_stats() const { return clips_.stats(); }
 
  private:
   nlohmann::json answer(const render::PreviewJob& job, const std::string& url_prefix) const;

@@ -9,6 +9,7 @@
 #include "app/stability_cost.h"
 #include "codec/problem.h"
 #include "plot/svg_writer.h"
+#include "softtune/support/run_limit.h"
 
 namespace softtune::app {
 
@@ -21,11 +22,12 @@ json sweep_and_encode(const codec::StabilityRequest& q, JobProgress* progress) {
   StageList stages;
   stages.add(Stage::validate);
   stages.add(Stage::stability_sweep);
-  std::function<bool()> hook;
-  if (progress) {
-    progress->set_total(sweep_case_count(q.sweep) + (q.run_chain ? chain_sweep_case_count(q.chain) : 0));
-    hook = [progress] { return progress->advance(); };
-  }
+  if (progress) progress->set_total(sweep_case_count(q.sweep) + (q.run_chain ? chain_sweep_case_count(q.chain) : 0));
+  // Between cases, the request's or job's run-time limit (softtune/support/run_limit.h) is checked too.
+  const std::function<bool()> hook = [progress] {
+    support::check_run_limit();
+    return !progress || progress->advance();
+  };
   const SweepResult sweep = run_sweep(q.sweep, hook);
   if (progress && progress->cancelled()) throw JobCancelled{};
   std::optional<ChainSweepResult> chain;

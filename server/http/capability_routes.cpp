@@ -81,8 +81,10 @@ Handler default_stability() {
 
 HttpResponse stability(const HttpRequest& request, Service& service) {
   const app::Format format = output_format(request, kStabilityFormats);
-  return answer_response(app::stability_answer(codec::decode_stability_request(codec::parse_json(request.body)), format,
-                                               service.config().presets_dir));
+  const nlohmann::json doc = codec::parse_json(request.body);
+  // The codec reads null as the default sweep (GET's request); a POSTed body is an object, as in every contract.
+  if (!doc.is_object()) throw codec::invalid_field("", "must be a JSON object ({} for the default sweep)");
+  return answer_response(app::stability_answer(codec::decode_stability_request(doc), format, service.config().presets_dir));
 }
 
 }  // namespace softtune::http

@@ -18,6 +18,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "http/request_framing.h"
+
 namespace softtune::http {
 namespace {
 
@@ -58,6 +60,8 @@ struct Held {
   std::size_t served = 0;
   bool draining = false;
   std::size_t discarded = 0;
+  std::size_t wanted = 0;   ///< the whole request's bytes, once its head is complete (0 before)
+  std::size_t counted = 0;  ///< bytes of `received` counted in State::buffered
 };
 
 struct Incoming {
@@ -87,16 +91,20 @@ struct ConnectionGate::State {
 
   std::unordered_map<int, Held> held;  ///< touched by the poll thread only
   std::atomic<std::size_t> held_count{0};
+  std::size_t buffered = 0;  ///< bytes received and held, summed over `held` (poll thread only)
 
   std::mutex ready_mutex;
   std::condition_variable ready_cv;
-  std::deque<ReadyConnection> ready;  ///< complete heads waiting for a worker
+  std::deque<ReadyConnection> ready;  ///< complete requests waiting for a worker
+  std::deque<ReadyConnection> lane;   ///< probes waiting for the reserved worker (or any idle one)
+  std::condition_variable lane_cv;
   std::atomic<std::size_t> ready_count{0};
   std::atomic<std::size_t> idle_workers{0};  ///< workers blocked waiting for a connection
   bool workers_stop = false;
 
   std::thread poller;
   std::vector<std::thread> workers;
+  std::thread lane_worker;
 
   void wake() const {
     const std::uint64_t one = 1;
@@ -121,7 +129,13 @@ struct ConnectionGate::State {
 
   // ---- poll thread ----
 
+  void account(Held& h) {
+    buffered += h.received.size() - h.counted;
+    h.counted = h.received.size();
+  }
+
   void forget(std::unordered_map<int, Held>::iterator it) {
+    buffered -= it->second.counted;
     ::epoll_ctl(epoll_fd, EPOLL_CTL_DEL, it->first, nullptr);
     held.erase(it);
     held_count.store(held.size(), std::memory_order_relaxed);
@@ -175,34 +189,61 @@ struct ConnectionGate::State {
     const int in_sock = in.sock;
     const auto [it, inserted] = held.insert_or_assign(in.sock, std::move(in.held));
     held_count.store(held.size(), std::memory_order_relaxed);
-    // A worker that gave way to others may hand back a connection whose next head it already read.
+    // A worker that gave way to others may hand back a connection whose next request it already read.
     if (it->second.draining) return;
-    if (head_complete(it->second.received)) {
-      hand_over(it);
-    } else {
-      // Read at once what has already arrived: under a flood of new connections a whole batch is inserted
-      // before epoll reports any of them readable, and a client whose head came in one packet (a health
-      // probe) must not wait in the gate, where later arrivals of the batch could evict it.
-      on_readable(in_sock);
-    }
+    account(it->second);
+    // Read at once what has already arrived: under a flood of new connections a whole batch is inserted
+    // before epoll reports any of them readable, and a client whose head came in one packet (a health
+    // probe) must not wait in the gate, where later arrivals of the batch could evict it.
+    if (progress(it)) on_readable(in_sock);
   }
 
-  // The head is complete (or too large to wait for): queue it for a worker, or answer 503 when the
-  // queue is full.
+  // Hands the connection to a worker once its request is complete (or its head too large to wait for);
+  // until then sets the body's deadline when the head completes. True while the request still arrives.
+  bool progress(std::unordered_map<int, Held>::iterator it) {
+    Held& h = it->second;
+    if (h.wanted == 0) {
+      const std::optional<std::size_t> size = request_size(h.received, options.max_body_bytes);
+      if (!size) {
+        if (h.received.size() <= options.max_head_bytes) return true;
+        hand_over(it);
+        return false;
+      }
+      h.wanted = *size;
+      const std::size_t body = *size - *head_size(h.received);
+      if (body > 0) {
+        const auto body_time = options.body_grace + std::chrono::milliseconds(body * 1000 / options.min_body_rate);
+        h.deadline = std::min(h.deadline, Clock::now() + body_time);
+      }
+    }
+    if (h.received.size() < h.wanted) return true;
+    hand_over(it);
+    return false;
+  }
+
+  // Queues the request for a worker (a probe for the reserved lane), or answers 503 when its queue is full.
   void hand_over(std::unordered_map<int, Held>::iterator it) {
     const int sock = it->first;
     Held& h = it->second;
+    const bool probe = is_lane_request(h.received);
     {
       const std::lock_guard lock(ready_mutex);
-      if (ready.size() < options.max_ready) {
-        ready.push_back({sock, std::move(h.received), h.request_start, h.served});
+      std::deque<ReadyConnection>& queue = probe ? lane : ready;
+      if (queue.size() < (probe ? options.max_lane : options.max_ready)) {
+        queue.push_back({sock, std::move(h.received), h.request_start, h.served, probe});
         ready_count.store(ready.size(), std::memory_order_relaxed);
         forget(it);
+        if (probe) lane_cv.notify_one();
         ready_cv.notify_one();
         return;
       }
     }
     answer_and_drain(sock, h, refuse(Refusal::busy, h.received));
+  }
+
+  // Past max_buffered_bytes, the connections that have waited longest make room.
+  void make_room() {
+    while (buffered > options.max_buffered_bytes && !held.empty()) drop(least_valuable());
   }
 
   void on_readable(int sock) {
@@ -226,7 +267,12 @@ struct ConnectionGate::State {
       h.deadline = h.request_start + options.request_read_timeout;
     }
     h.received.append(buf.data(), static_cast<std::size_t>(n));
-    if (head_complete(h.received) || h.received.size() > options.max_head_bytes) hand_over(it);
+    account(h);
+    if (buffered > options.max_buffered_bytes) {
+      make_room();
+      if (held.find(sock) == held.end()) return;
+    }
+    progress(it);
   }
 
   void sweep() {
@@ -289,39 +335,61 @@ struct ConnectionGate::State {
 
   // ---- worker threads ----
 
+  // A worker takes a waiting probe first, then the oldest request.
   void work() {
     for (;;) {
       ReadyConnection c;
       {
         std::unique_lock lock(ready_mutex);
         idle_workers.fetch_add(1, std::memory_order_relaxed);
-        ready_cv.wait(lock, [this] { return workers_stop || !ready.empty(); });
+        ready_cv.wait(lock, [this] { return workers_stop || !ready.empty() || !lane.empty(); });
         idle_workers.fetch_sub(1, std::memory_order_relaxed);
-        if (ready.empty()) return;
-        c = std::move(ready.front());
-        ready.pop_front();
+        std::deque<ReadyConnection>& queue = lane.empty() ? ready : lane;
+        if (queue.empty()) return;
+        c = std::move(queue.front());
+        queue.pop_front();
         ready_count.store(ready.size(), std::memory_order_relaxed);
       }
-      AfterServe after = AfterServe::close;
-      try {
-        after = serve(c);
-      } catch (...) {
-        after = AfterServe::close;
-      }
-      if (after == AfterServe::close) {
-        close_socket(c.sock);
-        continue;
-      }
-      Held h;
-      h.received = std::move(c.received);
-      h.request_start = c.request_start;
-      h.served = c.served;
-      if (after == AfterServe::drain_and_close) {
-        ::shutdown(c.sock, SHUT_WR);
-        h.draining = true;
-      }
-      take(c.sock, std::move(h));
+      serve_and_return(std::move(c));
     }
+  }
+
+  // The reserved lane's worker serves probes only: however long the other requests run, one thread is free
+  // for health and metrics.
+  void work_lane() {
+    for (;;) {
+      ReadyConnection c;
+      {
+        std::unique_lock lock(ready_mutex);
+        lane_cv.wait(lock, [this] { return workers_stop || !lane.empty(); });
+        if (lane.empty()) return;
+        c = std::move(lane.front());
+        lane.pop_front();
+      }
+      serve_and_return(std::move(c));
+    }
+  }
+
+  void serve_and_return(ReadyConnection c) {
+    AfterServe after = AfterServe::close;
+    try {
+      after = serve(c);
+    } catch (...) {
+      after = AfterServe::close;
+    }
+    if (after == AfterServe::close) {
+      close_socket(c.sock);
+      return;
+    }
+    Held h;
+    h.received = std::move(c.received);
+    h.request_start = c.request_start;
+    h.served = c.served;
+    if (after == AfterServe::drain_and_close) {
+      ::shutdown(c.sock, SHUT_WR);
+      h.draining = true;
+    }
+    take(c.sock, std::move(h));
   }
 };
 
@@ -329,7 +397,8 @@ ConnectionGate::ConnectionGate(GateOptions options, Serve serve, Refuse refuse) 
   State& s = *state_;
   s.options = options;
   s.options.max_open = fit_to_descriptor_limit(
-      options.max_open, kDescriptorReserve + static_cast<std::size_t>(options.threads) + options.max_ready);
+      options.max_open,
+      kDescriptorReserve + static_cast<std::size_t>(options.threads) + 1 + options.max_ready + options.max_lane);
   s.serve = std::move(serve);
   s.refuse = std::move(refuse);
   s.epoll_fd = ::epoll_create1(EPOLL_CLOEXEC);
@@ -341,6 +410,7 @@ ConnectionGate::ConnectionGate(GateOptions options, Serve serve, Refuse refuse) 
   ::epoll_ctl(s.epoll_fd, EPOLL_CTL_ADD, s.wake_fd, &ev);
   s.poller = std::thread([&s] { s.poll_loop(); });
   for (int i = 0; i < options.threads; ++i) s.workers.emplace_back([&s] { s.work(); });
+  s.lane_worker = std::thread([&s] { s.work_lane(); });
 }
 
 ConnectionGate::~ConnectionGate() { shutdown(); }
@@ -361,7 +431,9 @@ void ConnectionGate::shutdown() {
     s.workers_stop = true;
   }
   s.ready_cv.notify_all();
+  s.lane_cv.notify_all();
   for (std::thread& t : s.workers) t.join();
+  s.lane_worker.join();
   ::close(s.epoll_fd);
   ::close(s.wake_fd);
 }

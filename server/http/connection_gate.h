@@ -1,9 +1,12 @@
 #pragma once
-// Holds open connections while their request heads arrive, so that a worker thread is taken only by a
-// connection with a whole request head to serve. Slow clients (slowloris) and idle keep-alive
+// Holds open connections while their requests arrive, so that a worker thread is taken only by a
+// connection with a whole request to serve: its head, and the body its Content-Length declares
+// (request_framing.h). Slow clients (slowloris heads, bodies trickling in) and idle keep-alive
 // connections then cost a buffer and a file descriptor each, never a worker: they wait in one epoll
-// loop until their head is complete, their deadline passes, or newer connections need their place.
-// Plain POSIX sockets and threads; it knows nothing of HTTP beyond where a request head ends.
+// loop until their request is complete, their deadline passes, or newer connections need their place.
+// Health and metrics probes go to a reserved lane with its own worker, so they are answered however
+// many other requests wait. Plain POSIX sockets and threads; it knows nothing of HTTP beyond where a
+// request ends and which requests are probes.
 
 #include <chrono>
 #include <cstddef>
@@ -24,8 +27,19 @@ struct GateOptions {
   std::size_t max_open = 1024;
   std::size_t max_ready = 64;     ///< complete heads waiting for a free worker; more get 503
   std::size_t max_head_bytes = 16 * 1024;  ///< a head still incomplete at this size goes to a worker (which answers 431)
-  /// From a request's first byte until its head is complete; the worker gets what is left for the body.
+  /// From a request's first byte until the whole request (head and body) has arrived.
   std::chrono::milliseconds request_read_timeout{10'000};
+  /// Largest body the gate waits for (a larger Content-Length goes to a worker with its head, to be refused).
+  std::size_t max_body_bytes = 1 << 20;
+  /// Once the head is complete, its body must arrive within body_grace + Content-Length / min_body_rate
+  /// (bytes per second), and within request_read_timeout in any case; else 408.
+  std::size_t min_body_rate = 128 * 1024;
+  std::chrono::milliseconds body_grace{1'000};
+  /// Bytes the gate buffers in all (heads and bodies arriving); past it the connection that has waited
+  /// longest is closed, so slow bodies count against a total as connections do against max_open.
+  std::size_t max_buffered_bytes = 64u << 20;
+  /// Probes (is_lane_request) waiting for the reserved lane's worker; more get 503.
+  std::size_t max_lane = 64;
   /// A connection without any byte of a (next) request is closed after this time.
   std::chrono::milliseconds keep_alive_timeout{5'000};
 };
@@ -37,6 +51,7 @@ struct ReadyConnection {
   std::string received;
   std::chrono::steady_clock::time_point request_start;
   std::size_t served = 0;
+  bool lane = false;  ///< a probe on the reserved lane: serve this one request, then hand the connection back
 };
 
 /// What a worker says about the connection it served.
@@ -49,7 +64,7 @@ enum class AfterServe {
 /// Why the gate answers a request itself.
 enum class Refusal {
   busy,     ///< max_ready complete heads are already waiting for a worker: 503
-  timeout,  ///< the head did not arrive within request_read_timeout: 408
+  timeout,  ///< the request (head and body) did not arrive in time: 408
 };
 
 class ConnectionGate {

@@ -58,6 +58,10 @@ void add_cors_headers(const CorsPolicy& policy, const std::optional<std::string>
   response.headers.emplace_back("Access-Control-Expose-Headers", kCorsExposedHeaders);
 }
 
+std::string allow_list(const std::string& methods) {
+  return methods + (method_listed(methods, "GET") ? ", HEAD" : "") + ", OPTIONS";
+}
+
 bool is_preflight(const HttpRequest& request) {
   return request.method == "OPTIONS" && request.header("Origin") && request.header("Access-Control-Request-Method");
 }
@@ -66,7 +70,7 @@ HttpResponse preflight_response(const CorsPolicy& policy, const HttpRequest& req
   HttpResponse r;
   r.status = 204;
   r.content_type.clear();
-  const std::string methods = allowed_methods + (method_listed(allowed_methods, "GET") ? ", HEAD" : "") + ", OPTIONS";
+  const std::string methods = allow_list(allowed_methods);
   r.headers.emplace_back("Allow", methods);
   const std::string asked_method = request.header("Access-Control-Request-Method").value_or("");
   const std::string asked_headers = request.header("Access-Control-Request-Headers").value_or("");

@@ -32,6 +32,10 @@ struct CorsPolicy {
 /// Adds the CORS headers to an answer of a request from `origin` (its Origin header) when it is allowed.
 void add_cors_headers(const CorsPolicy& policy, const std::optional<std::string>& origin, HttpResponse& response);
 
+/// The Allow header of a path served under `methods` ("GET, POST"): those, HEAD beside GET, and OPTIONS.
+/// Every answer that names a path's methods (405, OPTIONS, a preflight) says this same list.
+std::string allow_list(const std::string& methods);
+
 /// True for a CORS preflight: OPTIONS with Origin and Access-Control-Request-Method.
 bool is_preflight(const HttpRequest& request);
 

@@ -17,8 +17,19 @@
 //    waits in the ConnectionGate (one epoll loop) until its request head is complete, and only then
 //    takes a worker (process_and_close_socket is overridden, as its own SSLServer does). The gate bounds
 //    the connections it holds, the heads waiting for a worker (503 above) and the time to send a head
-//    (408); a worker bounds the time left for the body and the head's bytes (431), and hands an idle
-//    keep-alive connection back to the gate.
+//    (408); it also holds the body a Content-Length declares until all of it has arrived, at a minimum
+//    rate (408 below it), so a body trickling in holds no worker either; health and metrics have a
+//    reserved worker (connection_gate.h). A worker bounds the time for a body it reads itself and the
+//    head's bytes (431), and hands an idle keep-alive connection back to the gate.
+//  - It serves Range requests by building the whole multipart answer in memory, any number of ranges
+//    (Server::apply_ranges): one 3 KB header of 1000 ranges made a 229 MB answer of openapi.json. Range
+//    is ignored here, as RFC 9110 14.2 allows: the setup hook that process_request runs after parsing the
+//    head clears the parsed ranges, so every answer is the whole representation with its own status
+//    (HEAD says "Accept-Ranges: none"). A Range header the library cannot parse it answers 416 itself.
+//  - It sends "Content-Length: 0" on a 204 and a 304, which RFC 9110 8.6 forbids: the post-routing hook
+//    removes it.
+//  - Its query parser drops a repeated name=value pair, so "format=json&format=json" would look like one
+//    value: the query is split again here from the raw target.
 //
 // Library internals this file relies on, beyond the public API, all of 0.11.4 (the version
 // server/CMakeLists.txt pins; check each one before moving to another version):
@@ -31,19 +42,25 @@
 //  - Server::new_task_queue called once per listen, and TaskQueue::enqueue called on the accept thread
 //    with a task that runs process_and_close_socket(sock), and TaskQueue::shutdown() on stop: the gate
 //    is created with the queue and enqueue runs the task inline.
-//  - The order of the hooks for one request: the head is read through the stream, then the
-//    100-continue handler (when asked), then the pre-routing handler, then the body, then the route
-//    handler; the error handler runs with the library's own status and an empty body; the logger runs
-//    once after each answer.
+//  - The order of the hooks for one request: the head is read through the stream, then the setup hook
+//    (process_request's last argument), then the 100-continue handler (when asked), then the pre-routing
+//    handler, then the body, then the route handler; the error handler runs with the library's own status
+//    and an empty body (400 when reading the body failed); the post-routing handler runs after the
+//    library added its own headers, just before they are written; the logger runs once after each answer.
+//  - httplib::detail::decode_url(s, convert_plus_to_space), which the compiled library exports.
 
 #include "http/http_transport.h"
 
 #include <httplib.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
+#include <poll.h>
 #include <sys/socket.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <map>
 #include <stdexcept>
 
 #include "http/connection_gate.h"
@@ -56,6 +73,14 @@ namespace {
 using Clock = TransportClock;
 
 thread_local ConnectionState* t_connection = nullptr;
+thread_local int t_socket = -1;  ///< the connection the worker serves
+
+// True once the client closed its side (or the connection failed): the request's work may stop
+// (softtune/support/run_limit.h), since no one will read its answer.
+bool client_closed(int sock) {
+  pollfd p{sock, POLLRDHUP, 0};
+  return ::poll(&p, 1, 0) > 0 && (p.revents & (POLLRDHUP | POLLHUP | POLLERR)) != 0;
+}
 
 // How long a worker waits for the next request on a keep-alive connection before handing it back to
 // the gate, unless other requests are waiting for a worker: a busy client sends it within a round trip,
@@ -74,15 +99,40 @@ class GateQueue final : public httplib::TaskQueue {
   ConnectionGate gate;
 };
 
+// Every name=value pair of the target's query, repeats included (the library keeps one of equal pairs).
+std::multimap<std::string, std::string> raw_query(const std::string& target) {
+  std::multimap<std::string, std::string> out;
+  const std::size_t q = target.find('?');
+  if (q == std::string::npos) return out;
+  const std::string_view query = std::string_view(target).substr(q + 1);
+  std::size_t start = 0;
+  while (start <= query.size()) {
+    std::size_t end = query.find('&', start);
+    if (end == std::string_view::npos) end = query.size();
+    const std::string_view pair = query.substr(start, end - start);
+    start = end + 1;
+    const std::size_t eq = pair.find('=');
+    const std::string key(pair.substr(0, eq));
+    if (key.empty()) continue;  // as the library does
+    const std::string value(eq == std::string_view::npos ? std::string_view() : pair.substr(eq + 1));
+    out.emplace(httplib::detail::decode_url(key, true), httplib::detail::decode_url(value, true));
+  }
+  return out;
+}
+
 HttpRequest plain_request(const httplib::Request& req) {
   HttpRequest out;
   out.method = req.method;
   out.path = req.path;
   for (const auto& [k, v] : req.headers) out.headers.emplace(k, v);
-  out.query.insert(req.params.begin(), req.params.end());
+  out.query = raw_query(req.target);
   out.body = req.body;
+  if (const int sock = t_socket; sock >= 0) out.client_gone = [sock] { return client_closed(sock); };
   return out;
 }
+
+// Range is ignored (see the top of this file): the whole representation, never a library-built range.
+void ignore_ranges(httplib::Request& req) { req.ranges.clear(); }
 
 void fill(httplib::Response& res, HttpResponse&& plain) {
   res.status = plain.status;
@@ -140,6 +190,10 @@ class LibraryServer final : public httplib::Server {
     g.max_head_bytes = limits::kMaxHeaderBytes;
     g.request_read_timeout = options_.request_read_timeout;
     g.keep_alive_timeout = options_.keep_alive_timeout;
+    g.max_body_bytes = limits::kMaxBodyBytes;
+    g.min_body_rate = limits::kMinBodyBytesPerSecond;
+    g.body_grace = limits::kBodyGrace;
+    g.max_buffered_bytes = limits::kMaxGateBufferedBytes;
     auto* queue = new GateQueue(
         g, [this](ReadyConnection& c) { return serve(c); },
         [this](Refusal why, std::string_view received) { return refusal(why, received); });
@@ -160,13 +214,14 @@ class LibraryServer final : public httplib::Server {
   AfterServe serve(ReadyConnection& c) {
     ConnectionState state;
     t_connection = &state;
+    t_socket = c.sock;
     LimitedStream stream(c.sock, state, options_, std::move(c.received));
     AfterServe after = AfterServe::close;
     for (;;) {
       stream.start_request(c.request_start);
       bool closed = false;
       const bool last = c.served + 1 >= options_.keep_alive_max_requests;
-      const bool answered = process_request(stream, last, closed, nullptr);
+      const bool answered = process_request(stream, last, closed, ignore_ranges);
       const bool ok = stream.flush() && answered;
       ++c.served;
       if (state.close_after || state.head_overflow) {
@@ -174,15 +229,23 @@ class LibraryServer final : public httplib::Server {
         break;
       }
       if (!ok || closed || last) break;
+      // The reserved lane's worker serves one probe and gives the connection back.
+      if (c.lane) {
+        c.received = stream.take_buffered();
+        c.request_start = Clock::now();
+        after = AfterServe::keep_alive;
+        break;
+      }
       if (!next_head_soon(stream)) break;
       c.request_start = Clock::now();
-      if (!stream.head_buffered() || gate_->requests_waiting()) {
+      if (!stream.request_buffered() || gate_->requests_waiting()) {
         c.received = stream.take_buffered();
         after = AfterServe::keep_alive;
         break;
       }
     }
     t_connection = nullptr;
+    t_socket = -1;
     return after;
   }
 
@@ -190,7 +253,7 @@ class LibraryServer final : public httplib::Server {
   // closed.
   bool next_head_soon(LimitedStream& stream) const {
     for (auto waited = std::chrono::microseconds(0);
-         waited < kKeepAliveGrace && !stream.head_buffered() && !gate_->requests_waiting(); waited += kGraceSlice) {
+         waited < kKeepAliveGrace && !stream.request_buffered() && !gate_->requests_waiting(); waited += kGraceSlice) {
       if (!stream.read_for(kGraceSlice)) return false;
     }
     return true;
@@ -243,7 +306,13 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
   s.new_task_queue = [&s] { return s.new_gate_queue(); };
 
   s.set_pre_routing_handler([&service = impl_->service](const httplib::Request& req, httplib::Response& res) {
-    if (t_connection) t_connection->head_done = true;
+    if (t_connection) {
+      t_connection->head_done = true;
+      // For a body the gate did not buffer. The request policy below checks the length; a longer one is
+      // refused unread, so the bound here only keeps the arithmetic in range.
+      const std::size_t length = std::strtoull(req.get_header_value("Content-Length").c_str(), nullptr, 10);
+      t_connection->body_deadline = body_deadline(Clock::now(), std::min<std::size_t>(length, limits::kMaxBodyBytes));
+    }
     if (auto refusal = head_refusal(req)) {
       service.add_cors(origin_of(req), *refusal);
       fill(res, std::move(*refusal));
@@ -282,13 +351,26 @@ HttpServer::HttpServer(Service& service, TransportOptions options)
   s.set_error_handler(httplib::Server::HandlerWithResponse([&service = impl_->service](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
     HttpResponse refusal = library_refusal(res.status, req.method, t_connection);
-    service.add_cors(origin_of(req), refusal);
+    // A 414 is answered before the headers are parsed: its Origin is found in the bytes read.
+    std::optional<std::string> origin = origin_of(req);
+    if (!origin && t_connection) origin = raw_header(t_connection->head_seen, "Origin");
+    service.add_cors(origin, refusal);
     fill(res, std::move(refusal));
     close_connection(req, res);
     return httplib::Server::HandlerResponse::Handled;
   }));
   s.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
     fill(res, internal_error_refusal());
+  });
+
+  // The library has added its own headers: a 1xx, 204 or 304 carries no Content-Length (RFC 9110 8.6),
+  // and HEAD says ranges are not served (the library says "bytes").
+  s.set_post_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+    if (res.status < 200 || res.status == 204 || res.status == 304) res.headers.erase("Content-Length");
+    if (req.method == "HEAD") {
+      res.headers.erase("Accept-Ranges");
+      res.set_header("Accept-Ranges", "none");
+    }
   });
 
   s.set_logger([&s](const httplib::Request& req, const httplib::Response& res) {

@@ -31,6 +31,8 @@ struct HttpRequest {
   HeaderMap headers;
   std::string body;
   std::map<std::string, std::string> params;  ///< captures of the route pattern's {name} segments
+  /// True once the client has closed its connection (set by the transport; empty in tests without one).
+  std::function<bool()> client_gone;
 
   std::optional<std::string> header(std::string_view name) const;
   std::optional<std::string> query_value(std::string_view name) const;

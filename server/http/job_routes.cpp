@@ -18,10 +18,17 @@ namespace {
 // One JobRunner per route table, made when first needed, as preview_routes.cpp's LazyPreviews.
 class LazyJobs {
  public:
-  app::JobRunner& get() {
-    std::call_once(once_, [this] {
+  /// The runner, made on the first call (its kept results then show in `metrics`).
+  app::JobRunner& get(Metrics* metrics = nullptr) {
+    std::call_once(once_, [this, metrics] {
       runner_ = std::make_unique<app::JobRunner>(
           app::JobLimits{app::kMaxQueuedJobs, app::kMaxKeptJobs, app::kKeepJobsFor, app::kMaxKeptJobBytes}, trim_allocator);
+      if (metrics) {
+        metrics->add_cache_gauge("job_results", [this] {
+          const auto [entries, bytes] = runner_->kept();
+          return Metrics::CacheSize{entries, bytes};
+        });
+      }
       started_.store(true, std::memory_order_release);
     });
     return *runner_;
@@ -48,8 +55,8 @@ codec::Problem unknown_job(const std::string& id) {
 }
 
 // 202 with the status URL, or 503 with Retry-After when the queue is full.
-HttpResponse queued(LazyJobs& jobs, app::JobRunner::Work work) {
-  const std::optional<std::string> id = jobs.get().submit(std::move(work));
+HttpResponse queued(LazyJobs& jobs, Service& service, app::JobRunner::Work work) {
+  const std::optional<std::string> id = jobs.get(&service.metrics()).submit(std::move(work));
   if (!id) {
     HttpResponse r = problem_response(codec::Problem(
         503, "Service unavailable", "",
@@ -69,16 +76,16 @@ std::vector<Route> job_routes() {
   auto jobs = std::make_shared<LazyJobs>();
   return {
       {"POST", app::kStabilityJobsRoute,
-       [jobs](const HttpRequest& request, Service&) {
+       [jobs](const HttpRequest& request, Service& service) {
          // Read and priced on the request thread, so a bad or too large request is a 4xx now, not a failed job.
          auto q = std::make_shared<const codec::StabilityRequest>(codec::decode_stability_request(codec::parse_json(request.body)));
          app::require_stability_job_budget(*q);
-         return queued(*jobs, [q](app::JobProgress& progress) { return app::run_stability_job(*q, progress); });
+         return queued(*jobs, service, [q](app::JobProgress& progress) { return app::run_stability_job(*q, progress); });
        }},
       {"POST", app::kCheckJobsRoute,
        [jobs](const HttpRequest& request, Service& service) {
          auto plan = std::make_shared<const app::CheckPlan>(app::plan_check_job(codec::parse_json(request.body), service.config().presets_dir));
-         return queued(*jobs, [plan](app::JobProgress& progress) { return app::run_check_plan(*plan, &progress).json; });
+         return queued(*jobs, service, [plan](app::JobProgress& progress) { return app::run_check_plan(*plan, &progress).json; });
        }},
       {"GET", std::string(kJobsPrefix) + "/{id}",
        [jobs](const HttpRequest& request, Service&) {

@@ -35,11 +35,24 @@ inline constexpr std::size_t kMaxOpenConnections = 1024;
 /// the bytes trickle in (a per-read timeout alone lets a client send one byte every few seconds forever);
 /// a head still incomplete then gets 408.
 inline constexpr std::chrono::milliseconds kRequestReadTimeout{10'000};
+/// Once the head is in, its body (Content-Length bytes) must arrive within kBodyGrace plus its length at
+/// kMinBodyBytesPerSecond, and within kRequestReadTimeout in any case; else 408. A body arriving waits in
+/// the connection gate, never in a worker.
+inline constexpr std::size_t kMinBodyBytesPerSecond = 128 * 1024;
+inline constexpr std::chrono::milliseconds kBodyGrace{1'000};
+/// Request bytes (heads and bodies arriving) the connection gate holds in all; past it the connection
+/// that has waited longest is closed.
+inline constexpr std::size_t kMaxGateBufferedBytes = 64u << 20;
 /// Each write of a response must make progress within this time.
 inline constexpr std::chrono::milliseconds kWriteTimeout{10'000};
 /// An idle keep-alive connection is closed after this time, and after this many requests.
 inline constexpr std::chrono::milliseconds kKeepAliveTimeout{5'000};
 inline constexpr std::size_t kKeepAliveMaxRequests = 1000;
+
+/// A request is stopped while it runs once its thread has taken this multiple of its CPU budget
+/// (app/budgets.h kCpuSeconds; a job of kJobCpuSeconds), or when its client has gone: the estimate before
+/// the work may be wrong (a crowded scene), the limit at run time holds (softtune/support/run_limit.h).
+inline constexpr double kRunLimitFactor = 2.0;
 
 /// Responses of deterministic contracts (tune) kept for repeated requests (a designer moving a slider
 /// back and forth asks the same thing again): at most this many entries and bytes, least recently

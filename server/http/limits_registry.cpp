@@ -68,6 +68,9 @@ std::vector<NumericLimit> numeric_limits() {
       {"max_queued_connections", D(hl::kMaxQueuedConnections)},
       {"max_open_connections", D(hl::kMaxOpenConnections)},
       {"request_read_timeout_ms", D(hl::kRequestReadTimeout.count())},
+      {"min_body_bytes_per_s", D(hl::kMinBodyBytesPerSecond)},
+      {"body_grace_ms", D(hl::kBodyGrace.count())},
+      {"max_gate_buffered_bytes", D(hl::kMaxGateBufferedBytes)},
       {"write_timeout_ms", D(hl::kWriteTimeout.count())},
       {"keep_alive_timeout_ms", D(hl::kKeepAliveTimeout.count())},
       {"keep_alive_max_requests", D(hl::kKeepAliveMaxRequests)},
@@ -131,9 +134,13 @@ std::vector<LimitRow> transport_rows() {
       {"request line plus headers", bytes(hl::kMaxHeaderBytes) + " in total", "`server/http/limits.h` `kMaxHeaderBytes`",
        "431; the connection closes (10 000 headers end here)"},
       {"reading one request",
-       millis(hl::kRequestReadTimeout.count()) + " for line, headers and body together, however slowly they trickle",
-       "`server/http/limits.h` `kRequestReadTimeout`",
-       "408 when the head is incomplete, else the connection closes (slowloris clients are cut off)"},
+       millis(hl::kRequestReadTimeout.count()) + " for line, headers and body together, however slowly they trickle; "
+           "once the head is in, the body within " + millis(hl::kBodyGrace.count()) + " plus its length at " +
+           bytes(hl::kMinBodyBytesPerSecond) + "/s. Heads and bodies arrive in the connection gate, never in a worker: " +
+           bytes(hl::kMaxGateBufferedBytes) + " of them held in all",
+       "`server/http/limits.h` `kRequestReadTimeout`, `kBodyGrace`, `kMinBodyBytesPerSecond`, `kMaxGateBufferedBytes`",
+       "408 and the connection closes (slowloris heads and slow bodies are cut off); past the bytes held, the "
+       "connection that has waited longest is closed"},
       {"writing a response", millis(hl::kWriteTimeout.count()) + " without progress",
        "`server/http/limits.h` `kWriteTimeout`", "the connection closes"},
       {"idle keep-alive connection",

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "http/memory_release.h"
+
 namespace softtune::http {
 namespace {
 
@@ -47,6 +49,11 @@ void Metrics::record_cache(std::string_view cache, bool hit) {
   ++(hit ? hits : misses);
 }
 
+void Metrics::add_cache_gauge(std::string cache, std::function<CacheSize()> source) {
+  const std::lock_guard lock(mutex_);
+  gauges_.emplace_back(std::move(cache), std::move(source));
+}
+
 std::string Metrics::prometheus_text() const {
   const std::lock_guard lock(mutex_);
   std::string out;
@@ -80,6 +87,21 @@ std::string Metrics::prometheus_text() const {
   for (const auto& [cache, counts] : caches_) {
     out += "softtune_cache_misses_total{cache=\"" + label(cache) + "\"} " + std::to_string(counts.second) + "\n";
   }
+  std::vector<std::pair<std::string, CacheSize>> sizes;
+  for (const auto& [cache, source] : gauges_) sizes.emplace_back(cache, source());
+  out += "# HELP softtune_cache_entries Entries a cache holds now, by cache.\n";
+  out += "# TYPE softtune_cache_entries gauge\n";
+  for (const auto& [cache, size] : sizes) {
+    out += "softtune_cache_entries{cache=\"" + label(cache) + "\"} " + std::to_string(size.entries) + "\n";
+  }
+  out += "# HELP softtune_cache_bytes Bytes a cache holds now, by cache.\n";
+  out += "# TYPE softtune_cache_bytes gauge\n";
+  for (const auto& [cache, size] : sizes) {
+    out += "softtune_cache_bytes{cache=\"" + label(cache) + "\"} " + std::to_string(size.bytes) + "\n";
+  }
+  out += "# HELP softtune_resident_bytes The process's resident set size (VmRSS).\n";
+  out += "# TYPE softtune_resident_bytes gauge\n";
+  out += "softtune_resident_bytes " + std::to_string(resident_bytes()) + "\n";
   return out;
 }
 

@@ -19,9 +19,20 @@ constexpr const char* kPrefix = "/api/v1/preview";
 // One PreviewService per route table, made when first needed.
 class LazyPreviews {
  public:
-  app::PreviewService& get() {
-    std::call_once(once_, [this] {
+  /// The service, made on the first call (its caches then show in `metrics`).
+  app::PreviewService& get(Metrics* metrics = nullptr) {
+    std::call_once(once_, [this, metrics] {
       service_ = std::make_unique<app::PreviewService>();
+      if (metrics) {
+        metrics->add_cache_gauge("preview_frames", [this] {
+          const support::LruStats s = service_->cache_stats();
+          return Metrics::CacheSize{s.entries, s.bytes};
+        });
+        metrics->add_cache_gauge("preview_clips", [this] {
+          const support::LruStats s = service_->clip_cache_stats();
+          return Metrics::CacheSize{s.entries, s.bytes};
+        });
+      }
       started_.store(true, std::memory_order_release);
     });
     return *service_;
@@ -103,7 +114,7 @@ std::vector<Route> preview_routes() {
       {"POST", "/api/v1/preview",
        [previews](const HttpRequest& request, Service& service) {
          return json_response(
-             previews->get().start(codec::parse_json(request.body), service.config().presets_dir, kPrefix));
+             previews->get(&service.metrics()).start(codec::parse_json(request.body), service.config().presets_dir, kPrefix));
        }},
       {"GET", "/api/v1/preview/{id}",
        [previews](const HttpRequest& request, Service&) {

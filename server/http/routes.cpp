@@ -36,7 +36,7 @@ HttpResponse metrics(const HttpRequest&, Service& service) {
 }
 
 HttpResponse static_page(const HttpRequest& request, Service& service) {
-  return serve_static(service.config().web_root, request.path);
+  return serve_static(service.config().web_root, request.path, request.header("If-None-Match"));
 }
 
 // The cache key of a request: numbers as the codec reads them (doubles, so 2 and 2.0 are one request),

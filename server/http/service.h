@@ -74,6 +74,7 @@ class Service {
   const Route* find(std::string_view method, std::string_view path) const;
   /// "GET, POST": the methods of the exact (non-catch-all) routes matching `path`.
   std::string allowed_methods(std::string_view path) const;
+  std::string path_methods(std::string_view path) const;
 
   ServiceConfig config_;
   std::vector<Route> routes_;

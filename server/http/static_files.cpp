@@ -1,10 +1,15 @@
 #include "http/static_files.h"
 
+#include <cstdint>
+#include <cstdio>
+#include <ctime>
 #include <fstream>
+#include <sys/stat.h>
 #include <iterator>
 #include <system_error>
 
 #include "codec/problem.h"
+#include "http/conditional.h"
 
 namespace softtune::http {
 namespace {
@@ -84,14 +89,50 @@ fs::path resolve_static_path(const fs::path& web_root, std::string_view path) {
   return file;
 }
 
-HttpResponse serve_static(const fs::path& web_root, std::string_view path) {
+// FNV-1a, 64 bits (Fowler, Noll, Vo): offset basis 14695981039346656037, prime 1099511628211.
+std::string static_etag(std::string_view bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (char c : bytes) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ull;
+  }
+  char buf[24];
+  std::snprintf(buf, sizeof buf, "\"%016llx\"", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+std::string http_date(long long unix_seconds) {
+  const std::time_t t = static_cast<std::time_t>(unix_seconds);
+  std::tm tm{};
+  ::gmtime_r(&t, &tm);
+  static constexpr const char* kDays[] = {"Sun", "Mon", "Tue", "Wed", "Thu", "Fri", "Sat"};
+  static constexpr const char* kMonths[] = {"Jan", "Feb", "Mar", "Apr", "May", "Jun",
+                                            "Jul", "Aug", "Sep", "Oct", "Nov", "Dec"};
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%s, %02d %s %04d %02d:%02d:%02d GMT", kDays[tm.tm_wday], tm.tm_mday, kMonths[tm.tm_mon],
+                tm.tm_year + 1900, tm.tm_hour, tm.tm_min, tm.tm_sec);
+  return buf;
+}
+
+HttpResponse serve_static(const fs::path& web_root, std::string_view path, const std::optional<std::string>& tags) {
   const fs::path file = resolve_static_path(web_root, path);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw not_found(path);
+  std::string bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>{});
   HttpResponse r;
-  r.content_type = content_type_for(file.filename().string());
-  r.body.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  const std::string etag = static_etag(bytes);
+  r.headers.emplace_back("ETag", etag);
+  struct stat st {};
+  if (::stat(file.c_str(), &st) == 0) r.headers.emplace_back("Last-Modified", http_date(st.st_mtime));
+  r.headers.emplace_back("Cache-Control", "no-cache");
   r.headers.emplace_back("X-Content-Type-Options", "nosniff");
+  if (tags && if_none_match(*tags, etag)) {
+    r.status = 304;
+    r.content_type.clear();
+    return r;
+  }
+  r.content_type = content_type_for(file.filename().string());
+  r.body = std::move(bytes);
   return r;
 }
 

@@ -10,14 +10,15 @@
 namespace softtune::http {
 namespace {
 
-// The head as the request policy sees it: method, path and the few headers it reads.
+// The head as the request policy sees it: method, path and every header the client sent (not the
+// addresses the library adds as headers).
 HttpRequest policy_head(const httplib::Request& req) {
   HttpRequest out;
   out.method = req.method;
   out.path = req.path;
-  for (const char* name : kPolicyHeaders) {
-    const auto [first, last] = req.headers.equal_range(name);
-    for (auto it = first; it != last; ++it) out.headers.emplace(name, it->second);
+  for (const auto& [name, value] : req.headers) {
+    if (name == "REMOTE_ADDR" || name == "REMOTE_PORT" || name == "LOCAL_ADDR" || name == "LOCAL_PORT") continue;
+    out.headers.emplace(name, value);
   }
   return out;
 }
@@ -55,11 +56,17 @@ codec::Problem library_problem(int status) {
 }  // namespace
 
 std::optional<HttpResponse> head_refusal(const httplib::Request& req) {
-  if (auto problem = check_request_head(policy_head(req))) return problem_response(*problem);
+  if (auto problem = check_request_head(policy_head(req), req.version)) return problem_response(*problem);
   return std::nullopt;
 }
 
 HttpResponse library_refusal(int status, std::string_view method, const ConnectionState* state) {
+  if (state && state->body_timed_out) {
+    return problem_response(codec::Problem(408, "Request timeout", "Content-Length",
+                                           "the body must arrive within " + std::to_string(limits::kBodyGrace.count()) +
+                                               " ms plus Content-Length at " + std::to_string(limits::kMinBodyBytesPerSecond) +
+                                               " bytes/s"));
+  }
   // The library refuses a header line over its compiled-in limit with a bare 400; the bytes read
   // tell that case apart from a malformed head.
   const bool line_too_long =
@@ -111,8 +118,10 @@ GateRefusal gate_refusal(Refusal why, std::string_view received, const Transport
                            "the server is busy: " + std::to_string(options.max_queued) +
                                " requests are already waiting for a worker; retry shortly")
           : codec::Problem(408, "Request timeout", "",
-                           "the request line and headers must arrive within " +
-                               std::to_string(options.request_read_timeout.count()) + " ms");
+                           "the request (line, headers and body) must arrive within " +
+                               std::to_string(options.request_read_timeout.count()) + " ms, the body within " +
+                               std::to_string(limits::kBodyGrace.count()) + " ms plus Content-Length at " +
+                               std::to_string(limits::kMinBodyBytesPerSecond) + " bytes/s");
   const std::string body = codec::problem_json(p).dump();
   GateRefusal out;
   out.status = p.status;

@@ -11,6 +11,7 @@
 
 #include "http/connection_gate.h"
 #include "http/limits.h"
+#include "http/request_framing.h"
 
 namespace softtune::http {
 namespace {
@@ -60,7 +61,16 @@ void LimitedStream::start_request(TransportClock::time_point first_byte) {
   deadline_ = first_byte + options_.request_read_timeout;
 }
 
-bool LimitedStream::head_buffered() const { return head_complete(std::string_view(buffer_).substr(begin_)); }
+TransportClock::time_point body_deadline(TransportClock::time_point head_read, std::size_t content_length) {
+  return head_read + limits::kBodyGrace +
+         std::chrono::milliseconds(content_length * 1000 / limits::kMinBodyBytesPerSecond);
+}
+
+bool LimitedStream::request_buffered() const {
+  const std::string_view rest = std::string_view(buffer_).substr(begin_);
+  const std::optional<std::size_t> size = request_size(rest, limits::kMaxBodyBytes);
+  return size && rest.size() >= *size;
+}
 
 std::string LimitedStream::take_buffered() {
   std::string rest = buffer_.substr(begin_);
@@ -78,10 +88,20 @@ bool LimitedStream::read_for(std::chrono::microseconds wait) {
   return receive() > 0;
 }
 
+TransportClock::time_point LimitedStream::read_deadline() const {
+  return state_.head_done ? std::min(deadline_, state_.body_deadline) : deadline_;
+}
+
+bool LimitedStream::wait_readable() const {
+  if (wait_for(sock_, POLLIN, remaining_ms(read_deadline())) > 0) return true;
+  if (state_.head_done) state_.body_timed_out = true;
+  return false;
+}
+
 bool LimitedStream::is_readable() const {
   if (has_buffered()) return true;
   if (!out_.empty() && !flush()) return false;
-  return wait_for(sock_, POLLIN, remaining_ms(deadline_)) > 0;
+  return wait_readable();
 }
 
 bool LimitedStream::is_writable() const {
@@ -94,7 +114,7 @@ ssize_t LimitedStream::read(char* ptr, size_t size) {
     if (!out_.empty() && !flush()) return -1;
     ssize_t n = receive();
     if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-      if (wait_for(sock_, POLLIN, remaining_ms(deadline_)) <= 0) return -1;
+      if (!wait_readable()) return -1;
       n = receive();
     }
     if (n <= 0) return n;
@@ -106,6 +126,7 @@ ssize_t LimitedStream::read(char* ptr, size_t size) {
       return -1;
     }
     state_.head_bytes += n;
+    state_.head_seen.append(buffer_.data() + begin_, n);
   }
   std::copy_n(buffer_.data() + begin_, n, ptr);
   begin_ += n;

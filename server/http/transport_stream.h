@@ -35,7 +35,19 @@ struct ConnectionState {
   bool head_overflow = false;  ///< the head outgrew limits::kMaxHeaderBytes
   bool close_after = false;    ///< answer, then close (the body was left unread)
   std::string_view route;      ///< the route pattern that answered (metrics label), empty if none ran
+  /// The body's deadline, set from its Content-Length once the head is read (body_deadline()); a read
+  /// that waits past it fails and sets body_timed_out (the answer is 408).
+  TransportClock::time_point body_deadline = TransportClock::time_point::max();
+  bool body_timed_out = false;
+  /// The head's bytes as read (at most limits::kMaxHeaderBytes): an answer the library writes before it
+  /// parsed the headers (414) still finds the request's Origin here.
+  std::string head_seen;
 };
+
+/// When a body of `content_length` bytes, whose head was read at `head_read`, must have arrived: the
+/// ConnectionGate's rule (limits::kBodyGrace + length / limits::kMinBodyBytesPerSecond) for the bodies a
+/// worker reads itself (after "Expect: 100-continue", or the next request on a busy keep-alive connection).
+TransportClock::time_point body_deadline(TransportClock::time_point head_read, std::size_t content_length);
 
 class LimitedStream final : public httplib::Stream {
  public:
@@ -46,8 +58,8 @@ class LimitedStream final : public httplib::Stream {
   /// starts the request's read deadline.
   void start_request(TransportClock::time_point first_byte);
   bool has_buffered() const { return begin_ < buffer_.size(); }
-  /// True when the unread bytes hold a whole request head.
-  bool head_buffered() const;
+  /// True when the unread bytes hold a whole request (head and its Content-Length body, request_framing.h).
+  bool request_buffered() const;
   /// The unread bytes, handed back to the gate with the connection.
   std::string take_buffered();
   /// Appends what has arrived, waiting up to `wait` for something; false when the client closed or the
@@ -66,6 +78,10 @@ class LimitedStream final : public httplib::Stream {
 
  private:
   ssize_t receive();
+  /// The request's deadline, or the body's when it comes first.
+  TransportClock::time_point read_deadline() const;
+  /// Waits for bytes until read_deadline(); false when none came (a body's wait then sets body_timed_out).
+  bool wait_readable() const;
 
   int sock_;
   ConnectionState& state_;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <thread>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "app/stability_app.h"
 #include "codec/problem.h"
 #include "codec/stability_codec.h"
+#include "softtune/support/run_limit.h"
 
 namespace softtune::app {
 namespace {
@@ -79,6 +81,25 @@ TEST(JobRunner, CancelStopsARunningSweepAtItsNextCase) {
   const std::size_t done = s["progress"]["done"], total = s["progress"]["total"];
   EXPECT_EQ(total, sweep_case_count(q.sweep));
   EXPECT_LT(done, total / 10) << "the sweep went on after the cancel";
+}
+
+// Work that never reports progress (one long Box2D run, one long sweep case) still stops within 1 s of a
+// cancel: the job runs under a run-time limit (softtune/support/run_limit.h) that carries its cancel flag,
+// checked by the long loops (here, this loop) between frames.
+TEST(JobRunner, CancelStopsWorkBetweenFramesWithinASecond) {
+  JobRunner runner;
+  std::atomic<bool> started{false};
+  const auto id = runner.submit([&started](JobProgress&) -> json {
+    started = true;
+    for (;;) support::check_run_limit();
+  });
+  ASSERT_TRUE(id);
+  while (!started) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  const auto cancelled_at = std::chrono::steady_clock::now();
+  EXPECT_TRUE(runner.cancel(*id));
+  const json s = wait_until_ended(runner, *id);
+  EXPECT_EQ(s["state"], "cancelled");
+  EXPECT_LT(std::chrono::steady_clock::now() - cancelled_at, std::chrono::seconds(1));
 }
 
 TEST(JobRunner, QueueIsBoundedAndAQueuedCancelFreesItsPlace) {

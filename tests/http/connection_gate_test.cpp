@@ -50,6 +50,7 @@ TEST(ConnectionGate, HoldsWhatTheDescriptorLimitAllows) {
   EXPECT_EXIT(expect_capacity_under_limit(4096, 4096, 1024, 1024), ::testing::ExitedWithCode(0), "");
   // A low soft limit under a high hard one is raised to fit.
   EXPECT_EXIT(expect_capacity_under_limit(256, 4096, 1024, 1024), ::testing::ExitedWithCode(0), "");
-  // A low hard limit: fewer connections, leaving the reserve (128 + 2 workers + 64 queued) free.
-  EXPECT_EXIT(expect_capacity_under_limit(512, 512, 1024, 512 - 128 - 2 - 64), ::testing::ExitedWithCode(0), "");
+  // A low hard limit: fewer connections, leaving the reserve (128 + 2 workers + the probe lane's worker + 64
+  // queued + 64 probes queued) free.
+  EXPECT_EXIT(expect_capacity_under_limit(512, 512, 1024, 512 - 128 - 2 - 1 - 64 - 64), ::testing::ExitedWithCode(0), "");
 }

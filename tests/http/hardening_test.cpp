@@ -12,6 +12,7 @@
 
 using nlohmann::json;
 using softtune::http::testing::body_of;
+using softtune::http::testing::exchange;
 using softtune::http::testing::quick_options;
 using softtune::http::testing::RawConnection;
 using softtune::http::testing::status_of;
@@ -22,13 +23,6 @@ namespace {
 
 const std::string kTune = R"({"response_frames": 12, "oscillation": "some", "effective_mass": 2})";
 
-// One raw request on a fresh connection; the whole response (the server closes after refusals).
-std::string exchange(int port, const std::string& request) {
-  RawConnection c(port);
-  EXPECT_TRUE(c.connected());
-  c.send(request);
-  return c.receive();
-}
 
 std::string field_of(const std::string& response) { return json::parse(body_of(response))["field"]; }
 
@@ -178,33 +172,36 @@ TEST(Hardening, ARefusedBodyIsNeverParsedAsTheNextRequest) {
   EXPECT_EQ(r.find("HTTP/1.1 200"), std::string::npos) << r;
 }
 
-// The head of a tune request whose body has not arrived yet: a worker takes it and waits for the body.
-std::string partial_tune_post() {
+std::string tune_post() {
   return "POST /api/v1/tune HTTP/1.1\r\nHost: t\r\nContent-Type: application/json\r\nConnection: close\r\n"
-         "Content-Length: " + std::to_string(kTune.size()) + "\r\n\r\n" + kTune.substr(0, 5);
+         "Content-Length: " + std::to_string(kTune.size()) + "\r\n\r\n" + kTune;
 }
 
+// A body still arriving holds no worker (it waits in the gate); a long request does: the default
+// stability sweep (about a second) holds the only worker, one tune waits in the queue, the next is 503.
+// Health is not refused: probes have their own lane.
 TEST(Hardening, FullQueueAnswers503) {
   auto options = quick_options();
   options.threads = 1;
   options.max_queued = 1;
   TestServer s(options);
   RawConnection holds_the_worker(s.port());
-  holds_the_worker.send(partial_tune_post());
+  holds_the_worker.send("GET /api/v1/stability HTTP/1.1\r\nHost: t\r\nConnection: close\r\n\r\n");
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   RawConnection waits_in_the_queue(s.port());
-  waits_in_the_queue.send(partial_tune_post());
+  waits_in_the_queue.send(tune_post());
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  auto res = s.client().Get("/api/v1/health");
+  auto res = s.client().Post("/api/v1/tune", kTune, "application/json");
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 503);
   EXPECT_EQ(res->get_header_value("Retry-After"), "1");
   EXPECT_EQ(softtune::http::testing::conformance_error("/api/v1/tune", "post", 503, "application/problem+json",
                                                         json::parse(res->body)), "");
-  // Once the bodies arrive, both requests are served.
-  holds_the_worker.send(kTune.substr(5));
-  EXPECT_EQ(status_of(holds_the_worker.receive()), 200);
-  waits_in_the_queue.send(kTune.substr(5));
+  auto health = s.client().Get("/api/v1/health");
+  ASSERT_TRUE(health);
+  EXPECT_EQ(health->status, 200);
+  // Both requests are served in the end.
+  EXPECT_EQ(status_of(holds_the_worker.receive(std::chrono::milliseconds(30000))), 200);
   EXPECT_EQ(status_of(waits_in_the_queue.receive()), 200);
 }
 

@@ -100,7 +100,7 @@ TEST(HttpRoutes, UnknownRoutesAndWrongMethods) {
   auto wrong = s.client().Get("/api/v1/tune");
   ASSERT_TRUE(wrong);
   EXPECT_EQ(wrong->status, 405);
-  EXPECT_EQ(wrong->get_header_value("Allow"), "POST");
+  EXPECT_EQ(wrong->get_header_value("Allow"), "POST, OPTIONS");
   auto post_unknown = s.client().Post("/api/v1/nothing", "{}", kJson);
   ASSERT_TRUE(post_unknown);
   EXPECT_EQ(post_unknown->status, 404);

@@ -51,3 +51,20 @@ TEST(Metrics, EscapesLabelValues) {
   m.record_request("a\"b\\c\nd", 200, 0.001);
   EXPECT_TRUE(has_line(m.prometheus_text(), R"(softtune_requests_total{route="a\"b\\c\nd",status="200"} 1)"));
 }
+
+// Each cache's size is read from its source at every exposition; the resident set comes with them.
+TEST(Metrics, ReportsEachCachesEntriesAndBytes) {
+  softtune::http::Metrics m;
+  std::size_t entries = 3, bytes = 4096;
+  m.add_cache_gauge("tune", [&] { return softtune::http::Metrics::CacheSize{entries, bytes}; });
+  std::string text = m.prometheus_text();
+  EXPECT_NE(text.find("softtune_cache_entries{cache=\"tune\"} 3\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("softtune_cache_bytes{cache=\"tune\"} 4096\n"), std::string::npos) << text;
+  entries = 0;
+  bytes = 0;
+  text = m.prometheus_text();
+  EXPECT_NE(text.find("softtune_cache_bytes{cache=\"tune\"} 0\n"), std::string::npos) << text;
+  const std::size_t at = text.find("\nsofttune_resident_bytes ");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_GT(std::stoull(text.substr(at + 25)), 1u << 20);  // a test process holds more than 1 MiB
+}

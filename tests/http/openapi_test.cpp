@@ -113,6 +113,9 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["max_queued_connections"], l::kMaxQueuedConnections);
   EXPECT_EQ(x["max_open_connections"], l::kMaxOpenConnections);
   EXPECT_EQ(x["request_read_timeout_ms"], l::kRequestReadTimeout.count());
+  EXPECT_EQ(x["min_body_bytes_per_s"], l::kMinBodyBytesPerSecond);
+  EXPECT_EQ(x["body_grace_ms"], l::kBodyGrace.count());
+  EXPECT_EQ(x["max_gate_buffered_bytes"], l::kMaxGateBufferedBytes);
   EXPECT_EQ(x["write_timeout_ms"], l::kWriteTimeout.count());
   EXPECT_EQ(x["keep_alive_timeout_ms"], l::kKeepAliveTimeout.count());
   EXPECT_EQ(x["keep_alive_max_requests"], l::kKeepAliveMaxRequests);
@@ -155,7 +158,10 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["max_kept_jobs"], softtune::app::kMaxKeptJobs);
   EXPECT_EQ(x["job_kept_s"], softtune::app::kKeepJobsFor.count());
   EXPECT_EQ(x["max_kept_job_bytes"], softtune::app::kMaxKeptJobBytes);
-  EXPECT_EQ(x.size(), 50u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x.size(), 53u) << "a limit is documented that this test does not check";
+  // A list's length in a schema is the codec's.
+  EXPECT_EQ(openapi_document()["components"]["schemas"]["AccuracyRequest"]["properties"]["soft_substeps"]["maxItems"],
+            softtune::limits::kMaxSoftSubsteps);
 }
 
 TEST(OpenApi, EveryRefResolves) {

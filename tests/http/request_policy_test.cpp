@@ -14,6 +14,7 @@ HttpRequest head(std::string method, std::initializer_list<std::pair<const char*
   r.method = std::move(method);
   r.path = "/api/v1/tune";
   for (const auto& [k, v] : headers) r.headers.emplace(k, v);
+  if (!r.header("Host")) r.headers.emplace("Host", "t");  // an HTTP/1.1 request names its host
   return r;
 }
 
@@ -60,6 +61,27 @@ TEST(RequestPolicy, NeedsJsonBodiesAndBodilessGets) {
   EXPECT_EQ(verdict(head("GET", {{"Content-Length", "5"}})), "400 Content-Length");
 }
 
+// RFC 9112 3.2 and 5.1: one well-formed Host (HTTP/1.0 may omit it), and no space before a header's colon.
+TEST(RequestPolicy, NeedsOneHostAndTokenHeaderNames) {
+  HttpRequest bare;
+  bare.method = "GET";
+  bare.path = "/api/v1/health";
+  ASSERT_TRUE(check_request_head(bare));
+  EXPECT_EQ(check_request_head(bare)->field, "Host");
+  EXPECT_FALSE(check_request_head(bare, "HTTP/1.0"));
+  for (const std::string host : {"example.com", "127.0.0.1:8080", "[::1]:8080", "a-b.c_d~e"}) {
+    EXPECT_EQ(verdict(head("GET", {{"Host", host}})), "ok") << host;
+  }
+  for (const std::string host : {"a b", "a/b", ":80", "a:8x", "[::1", "x@y"}) {
+    EXPECT_EQ(verdict(head("GET", {{"Host", host}})), "400 Host") << host;
+  }
+  EXPECT_EQ(verdict(head("GET", {{"Host", "a"}, {"host", "a"}})), "400 Host");
+  EXPECT_EQ(verdict(head("GET", {{"Host ", "x"}})), "400 Host");
+  EXPECT_EQ(verdict(head("POST", {{"Transfer-Encoding ", "chunked"}, {"Content-Length", "2"}, {"Content-Type", "application/json"}})),
+            "400 Transfer-Encoding");
+  EXPECT_EQ(verdict(head("GET", {{"X(y)", "1"}})), "400 X(y)");
+}
+
 namespace softtune::http {
 namespace {
 
@@ -68,6 +90,7 @@ TEST(RequestPolicy, IdentifyAloneTakesCsv) {
   HttpRequest r;
   r.method = "POST";
   r.path = "/api/v1/identify";
+  r.headers.emplace("Host", "t");
   r.headers.emplace("Content-Type", "text/csv; charset=utf-8");
   r.headers.emplace("Content-Length", "10");
   EXPECT_FALSE(check_request_head(r));

@@ -51,7 +51,7 @@ TEST(Service, NoRouteIs404AndAWrongMethodIs405) {
   EXPECT_EQ(r.status, 405);
   ASSERT_EQ(r.headers.size(), 1u);
   EXPECT_EQ(r.headers[0].first, "Allow");
-  EXPECT_EQ(r.headers[0].second, "GET, POST");
+  EXPECT_EQ(r.headers[0].second, "GET, POST, HEAD, OPTIONS");
   EXPECT_EQ(json::parse(s.handle(request("HEAD", "/echo/y")).body)["name"], "y");
 }
 

@@ -83,3 +83,11 @@ TEST(StaticContentTypes, ByExtension) {
   EXPECT_EQ(content_type_for("archive.tar.gz"), "application/octet-stream");
   EXPECT_EQ(content_type_for("README"), "application/octet-stream");
 }
+
+// The validators against their definitions: FNV-1a 64's published vectors ("" is the offset basis, "a"
+// is 0xaf63dc4c8601ec8c) and RFC 9110 5.6.7's own example date.
+TEST(StaticValidators, EtagIsTheFnv1aHashAndDatesAreImfFixdate) {
+  EXPECT_EQ(softtune::http::static_etag(""), "\"cbf29ce484222325\"");
+  EXPECT_EQ(softtune::http::static_etag("a"), "\"af63dc4c8601ec8c\"");
+  EXPECT_EQ(softtune::http::http_date(784111777), "Sun, 06 Nov 1994 08:49:37 GMT");
+}

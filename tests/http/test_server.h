@@ -142,6 +142,14 @@ inline int status_of(const std::string& response) {
   return std::stoi(response.substr(9, 3));
 }
 
+/// One raw request on a fresh connection; the whole response (the server closes after refusals).
+inline std::string exchange(int port, const std::string& request,
+                            std::chrono::milliseconds timeout = std::chrono::milliseconds(3000)) {
+  RawConnection c(port);
+  c.send(request);
+  return c.receive(timeout);
+}
+
 /// The body of a raw HTTP response.
 inline std::string body_of(const std::string& response) {
   const std::size_t end = response.find("\r\n\r\n");

@@ -15,6 +15,7 @@ TEST(TransportRefusals, AHeadThePolicyRefusesIsAnsweredBeforeItsBody) {
   httplib::Request chunked;
   chunked.method = "POST";
   chunked.path = "/api/v1/tune";
+  chunked.headers.emplace("Host", "t");
   chunked.headers.emplace("Transfer-Encoding", "chunked");
   const auto refusal = head_refusal(chunked);
   ASSERT_TRUE(refusal);
@@ -25,6 +26,7 @@ TEST(TransportRefusals, AHeadThePolicyRefusesIsAnsweredBeforeItsBody) {
   httplib::Request fine;
   fine.method = "GET";
   fine.path = "/api/v1/health";
+  fine.headers.emplace("Host", "t");
   EXPECT_FALSE(head_refusal(fine));
 }
 

@@ -50,10 +50,10 @@ TEST(TransportStream, GateBytesComeFirstThenTheSocket) {
   TransportOptions options;
   LimitedStream s(p.fd[0], state, options, "GET / HTTP/1.1\r\n");
   s.start_request(TransportClock::now());
-  EXPECT_FALSE(s.head_buffered());
+  EXPECT_FALSE(s.request_buffered());
   p.peer_sends("Host: x\r\n\r\n");
   ASSERT_TRUE(s.read_for(200ms));
-  EXPECT_TRUE(s.head_buffered());
+  EXPECT_TRUE(s.request_buffered());
   EXPECT_EQ(read_all_buffered(s), "GET / HTTP/1.1\r\nHost: x\r\n\r\n");
   EXPECT_EQ(state.head_bytes, 27u);
   p.peer_sends("next");

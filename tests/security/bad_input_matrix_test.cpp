@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bad_input_cases.h"
+#include "http/router.h"
 #include "harnesses.h"
 // After Eigen (through the codec headers): cpp-httplib brings <resolv.h>, whose `_res` macro breaks
 // Eigen's parameters of that name.
@@ -90,11 +91,15 @@ class BadInputMatrix : public ::testing::Test {
     if (!res) return {599, "", json{{"error", "no answer"}}};
     Outcome o{res->status, "", json()};
     o.body = json::parse(res->body, nullptr, false);
+    const std::string documented = get ? "/api/v1/presets/{name}" : path;
     if (res->status >= 400) {
       EXPECT_EQ(res->get_header_value("Content-Type").rfind("application/problem+json", 0), 0u) << c.name;
       if (o.body.is_object() && o.body.contains("field")) o.field = o.body["field"].get<std::string>();
+      // The document lists every status a route answers with.
+      EXPECT_EQ(http::testing::conformance_error(documented, get ? "get" : "post", res->status, "application/problem+json",
+                                                 o.body), "")
+          << c.name;
     } else {
-      const std::string documented = get ? "/api/v1/presets/{name}" : path;
       EXPECT_EQ(http::testing::conformance_error(documented, get ? "get" : "post", res->status, "application/json", o.body), "")
           << c.name;
     }
@@ -120,6 +125,15 @@ std::string preset_path(const std::string& name) {
     }
   }
   return out;
+}
+
+// The document's path pattern that a request path (its query dropped) falls under.
+std::string documented_pattern(const std::string& target) {
+  const std::string path = target.substr(0, target.find('?'));
+  for (const auto& [pattern, item] : http::testing::openapi_document()["paths"].items()) {
+    if (pattern != "/{path}" && http::match_route(pattern, path)) return pattern;
+  }
+  return "/{path}";
 }
 
 TEST_F(BadInputMatrix, EveryCaseEndsAs4xxNamingTheFieldOrAFiniteAnswer) {
@@ -251,6 +265,11 @@ TEST_F(BadInputMatrix, CostQueryConditionalAndIdCasesEndAsTheRfcAndTheBudgetAsk)
     ASSERT_TRUE(res);
     EXPECT_EQ(res->status, e.status) << res->body.substr(0, 300);
     EXPECT_LT(res->body.size(), 2000u) << "a refusal echoes no more than the valid form";
+    if (res->status >= 400) {
+      const std::string method = e.method == "GET" ? "get" : e.method == "DELETE" ? "delete" : "post";
+      EXPECT_EQ(http::testing::conformance_error(documented_pattern(e.path), method, res->status, "application/problem+json",
+                                                 json::parse(res->body, nullptr, false)), "");
+    }
     if (!e.field.empty()) {
       const json problem = json::parse(res->body, nullptr, false);
       ASSERT_TRUE(problem.is_object()) << res->body.substr(0, 300);
