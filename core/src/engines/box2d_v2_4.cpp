@@ -113,13 +113,40 @@ Prediction predict_mouse_rotating(const Eigen::Matrix3d& a, double h) {
   return out;
 }
 
+// The step with what was typed, without the legality check: (k, d) as the engine's step map holds them.
+Prediction predict_typed(const Setup& s, double k, double d) {
+  if (s.angular_damping()) return predict_mouse_rotating(box2d_v2_4_mouse_step_map(s.m, k, d, s.h, s.rotation_share), s.h);
+  return predict_from_step_map(box2d_v2_4_step_map(s.m, k, d, s.h), s.h);
+}
+
 std::optional<Prediction> predict_spring(const Setup& s, double k, double d) {
   const double h = s.h;
   // The engine divides by h (d + h k) and treats k <= 0 as rigid: only a positive k and d + h k > 0 act
   // as the spring that was typed.
   if (!(k > 0.0) || !(d + h * k >= kBox2DV24FloatMargin * h * k) || k > kFloatMax || std::abs(d) > kFloatMax) return std::nullopt;
-  if (s.angular_damping()) return predict_mouse_rotating(box2d_v2_4_mouse_step_map(s.m, k, d, h, s.rotation_share), h);
-  return predict_from_step_map(box2d_v2_4_step_map(s.m, k, d, h), h);
+  return predict_typed(s, k, d);
+}
+
+// What the engine does with a refused (k, d), k > 0 and finite in float: InitVelocityConstraints computes
+// m_gamma = h (d + h k) in float from the float fields and the float step. At 0 the joint is rigid
+// (m_gamma = 0: the velocity along the axis is zeroed, the stretch holds); otherwise its step is the same
+// implicit-Euler map with the damping the float sum leaves, d' = (d + h k)_float - h k: where d + h k
+// rounds to a few 1e-7 of h k (exact mode at zeta 0) that is an undamped spring (symplectic Euler), where it
+// is clearly negative (a negative typed damping) the map grows or turns unstable.
+struct Refused {
+  Prediction predicted;
+  bool rigid = false;
+};
+Refused predict_refused(const Setup& s, double k, double d) {
+  const float hf = static_cast<float>(s.h), kf = static_cast<float>(k), df = static_cast<float>(d);
+  const float hk = hf * kf;
+  const float sum = df + hk;  // b2_distance_joint.cpp: m_gamma = h * (d + h * k)
+  if (hf * sum == 0.0f) return {{std::nullopt, std::nullopt, 1.0, true}, true};
+  const double hd = static_cast<double>(hf);
+  const double d_used = static_cast<double>(sum) - static_cast<double>(hd * kf);
+  Setup used = s;
+  used.h = hd;
+  return {predict_typed(used, static_cast<double>(kf), d_used), false};
 }
 
 Parameters parameters_of(const Setup& s, double k, double d) {
@@ -170,8 +197,21 @@ EngineReport report(const Target& t, const SettingValues& values) {
                                 "the motion is not second order"});
       }
     }
+  } else if (k > 0.0 && k <= kFloatMax && std::abs(d) <= kFloatMax) {
+    // Refused (d + h k too close to 0 or below it), yet the engine runs it: `predicted` is what it does.
+    const Refused r = predict_refused(s, k, d);
+    out.predicted = r.predicted;
+    out.warnings.push_back({WarningCode::engine_refuses, d + h * k, 0.0, kBox2DV24Model.name,
+                            r.rigid ? "stiffness must be > 0 and damping + h stiffness > 0: here h (damping + h "
+                                      "stiffness) rounds to 0 in float, m_gamma = 0 and the joint is rigid"
+                                    : "stiffness must be > 0 and damping + h stiffness > 0: below, `predicted` is "
+                                      "the step with the damping that float rounding leaves (an undamped spring "
+                                      "near 0, growing below it)"});
+    if (!r.rigid && !r.predicted.stable) {
+      out.warnings.push_back({WarningCode::engine_unstable, r.predicted.spectral_radius, 1.0, kBox2DV24Model.name});
+    }
   } else {
-    // What the engine does instead: m_gamma = 0 makes the joint rigid (k > 0) or absent (k <= 0).
+    // What the engine does instead: k <= 0 makes the joint rigid, a value past float's range infinity.
     out.predicted = {std::nullopt, std::nullopt, 1.0, true};
     out.warnings.push_back({WarningCode::engine_refuses, d + h * k, 0.0, kBox2DV24Model.name,
                             "stiffness must be > 0 and damping + h stiffness > 0, else m_gamma = 0 and "
@@ -216,14 +256,20 @@ EngineReport report(const Target& t, const SettingValues& values) {
       const ResponseSolve solve = solve_response(
           [&](double k_try, double d_try) { return predict_spring(s, k_try, d_try); }, t.omega,
           t.damping_ratio, guess.stiffness, guess.damping);
-      if (solve.met) {
+      // Not met: the solver's nearest, when the engine takes it and it is within the nearest bars.
+      const bool nearest = !solve.met && within_nearest(solve.prediction, t.omega, t.damping_ratio) &&
+                           predict_spring(s, solve.p0, solve.p1).has_value();
+      if (solve.met || nearest) {
         out.exact = parameters_of(s, solve.p0, solve.p1);
         out.exact_predicted = solve.prediction;
-      } else {
+      }
+      if (!solve.met) {
         out.warnings.push_back({WarningCode::engine_inexact, solve.frequency_error, solve.damping_error,
                                 kBox2DV24Model.name,
-                                "its step is implicit Euler, which always damps: zero damping needs "
-                                      "damping + h stiffness = 0, where the joint turns rigid"});
+                                nearest ? "its step is implicit Euler, which always damps: `exact` is the "
+                                          "nearest spring the joint takes"
+                                        : "its step is implicit Euler, which always damps: zero damping needs "
+                                          "damping + h stiffness = 0, where the joint turns rigid"});
       }
     }
   }
