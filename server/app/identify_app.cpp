@@ -1,5 +1,6 @@
 #include "app/identify_app.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -23,13 +24,18 @@ std::optional<ResponseValues> measured_response(const Identification& id) {
 }
 
 // The request re-aimed at the corrected values, so a modelled engine's plain export says what to type for
-// them in its own fields; empty when they leave the tune contract's ranges.
+// them in its own fields: standard mode, whose export is next's own k = m omega^2, c = 2 m zeta omega.
+// A correction may type a negative ratio (down to kIdentifyLowestTypedRatio, where the engine damps by
+// itself), which the engine models take but the tune contract's damping_ratio, [0, 1000], does not: the
+// request is checked with the ratio at 0 and then carries next's. Empty when the rest leaves the contract.
 std::optional<TuneRequest> retargeted(TuneRequest q, const ResponseValues& next) {
   q.response_frames.reset();
   q.oscillation.reset();
+  q.mode = SoftMode::standard;
   q.frequency_hz = next.frequency_hz;
-  q.damping_ratio = next.damping_ratio;
+  q.damping_ratio = std::max(0.0, next.damping_ratio);
   if (validate_tune_request(q)) return std::nullopt;
+  q.damping_ratio = next.damping_ratio;
   return q;
 }
 

@@ -101,6 +101,41 @@ TEST(IdentifyApp, NegativeDampingOnlyWhereTheEngineTakesIt) {
   EXPECT_EQ(run_identify(request)["correction"]["next"]["damping_ratio"].get<double>(), 0.0);
 }
 
+// The same rounds on Jolt (8 Hz / 0.3, its implicit collision step damps by itself): next's negative ratio
+// is what Jolt takes (damping + h stiffness = m omega (2 zeta + omega h) > 0 down to -omega h / 4), so the
+// correction gives it in Jolt's own fields, next itself: mFrequency = next Hz, mDamping = next's ratio,
+// and what Jolt then does, its implicit-Euler step on k = m omega^2, c = 2 m zeta omega.
+TEST(IdentifyApp, NegativeNextIsGivenInTheEnginesFieldsWhereItTakesIt) {
+  const json answer = run_identify({{"csv", oscillator_csv(8.0, 0.45, 240)},
+                                    {"request", {{"frequency_hz", 8}, {"damping_ratio", 0.3}, {"effective_mass", 2},
+                                                 {"mode", "exact"}}},
+                                    {"typed", {{"frequency_hz", 8}, {"damping_ratio", 0}}},
+                                    {"engine", "jolt"}});
+  const json& c = answer["correction"];
+  const double f = c["next"]["frequency_hz"].get<double>(), zeta = c["next"]["damping_ratio"].get<double>();
+  ASSERT_LT(zeta, 0.0);
+  const double h = 1.0 / 60.0, omega = 2.0 * std::numbers::pi * f;
+  ASSERT_GT(2.0 * zeta + omega * h, 0.0);  // Jolt takes it
+  ASSERT_TRUE(c["parameters"].is_object()) << c.dump();
+  EXPECT_EQ(c["parameters"]["SpringSettings::mMode"], "FrequencyAndDamping");
+  EXPECT_NEAR(c["parameters"]["SpringSettings::mFrequency"].get<double>(), f, 1e-9 * f);
+  EXPECT_NEAR(c["parameters"]["SpringSettings::mDamping"].get<double>(), zeta, 1e-9);
+  // Jolt's collision step (linear damping 0.05 1/s) on m = 2, k = m omega^2, c = 2 m zeta omega: implicit
+  // Euler, (m + h c + h^2 k) v1 = m a v0 - h k x0, x1 = x0 + h v1, a = 1 - 0.05 h; its poles read as
+  // s = ln(z) / h.
+  const double m = 2.0, k = m * omega * omega, cd = 2.0 * m * zeta * omega, a = 1.0 - 0.05 * h;
+  const double d = m + h * cd + h * h * k;
+  const double s10 = -h * k / d, s11 = m * a / d, s00 = 1.0 + h * s10, s01 = h * s11;
+  const double tr = s00 + s11, det = s00 * s11 - s01 * s10;
+  ASSERT_LT(tr * tr, 4.0 * det);  // a complex pair
+  const double r = std::sqrt(det), theta = std::acos(tr / (2.0 * r));
+  const double sr = std::log(r) / h, si = theta / h, w = std::hypot(sr, si);
+  const json& p = c["parameters_predicted"];
+  EXPECT_NEAR(p["frequency_hz"].get<double>(), w / (2.0 * std::numbers::pi), 1e-6);
+  EXPECT_NEAR(p["damping_ratio"].get<double>(), -sr / w, 1e-6);
+  EXPECT_TRUE(p["stable"].get<bool>());
+}
+
 TEST(IdentifyApp, BadSeriesNameRowAndColumn) {
   EXPECT_EQ(identify_problem({{"csv", "time,x\n0,1\n0.1,abc\n"}}).substr(0, 21), "422 csv.rows.1.x: lin");
   EXPECT_EQ(identify_problem({{"csv", "time,x\n0,1\n0.1,2,3\n"}}).substr(0, 20), "422 csv.rows.1: line");

@@ -113,13 +113,50 @@ Prediction predict_mouse_rotating(const Eigen::Matrix3d& a, double h) {
   return out;
 }
 
+// The step with what was typed, without the legality check: (k, d) as the engine's step map holds them.
+Prediction predict_typed(const Setup& s, double k, double d) {
+  if (s.angular_damping()) return predict_mouse_rotating(box2d_v2_4_mouse_step_map(s.m, k, d, s.h, s.rotation_share), s.h);
+  return predict_from_step_map(box2d_v2_4_step_map(s.m, k, d, s.h), s.h);
+}
+
 std::optional<Prediction> predict_spring(const Setup& s, double k, double d) {
   const double h = s.h;
   // The engine divides by h (d + h k) and treats k <= 0 as rigid: only a positive k and d + h k > 0 act
   // as the spring that was typed.
   if (!(k > 0.0) || !(d + h * k >= kBox2DV24FloatMargin * h * k) || k > kFloatMax || std::abs(d) > kFloatMax) return std::nullopt;
-  if (s.angular_damping()) return predict_mouse_rotating(box2d_v2_4_mouse_step_map(s.m, k, d, h, s.rotation_share), h);
-  return predict_from_step_map(box2d_v2_4_step_map(s.m, k, d, h), h);
+  return predict_typed(s, k, d);
+}
+
+// What the engine does with a refused (k, d), k > 0 and finite in float: InitVelocityConstraints computes
+// m_gamma = h (d + h k) in float from the float fields and the float step. At 0 the joint is rigid
+// (m_gamma = 0: the velocity along the axis is zeroed, the stretch holds); otherwise its step is the same
+// implicit-Euler map with the damping the float sum leaves, d' = (d + h k)_float - h k: where d + h k
+// rounds to a few 1e-7 of h k (exact mode at zeta 0) that is an undamped spring (symplectic Euler), where it
+// is clearly negative (a negative typed damping) the map grows or turns unstable.
+struct Refused {
+  Prediction predicted;
+  bool rigid = false;
+};
+Refused predict_refused(const Setup& s, double k, double d) {
+  const float hf = static_cast<float>(s.h), kf = static_cast<float>(k), df = static_cast<float>(d);
+  const float hk = hf * kf;
+  const float sum = df + hk;  // b2_distance_joint.cpp: m_gamma = h * (d + h * k)
+  if (hf * sum == 0.0f) return {{std::nullopt, std::nullopt, 1.0, true}, true};
+  const double hd = static_cast<double>(hf);
+  Setup used = s;
+  used.h = hd;
+  // b2_wheel_joint.cpp inverts m_gamma only `if (m_gamma > 0.0f)`: below 0 it stays g = h (d + h k), so the
+  // row is the soft step whose softness is g itself: the implicit-Euler map with d + h k = 1 / (h^2 (d + h k)),
+  // hugely negative, which zeroes the velocity along the axis each step. Its poles are a real one near 1 (the
+  // stretch holds, or creeps for a typed damping well below -h k) and one near 0: rigid, with that map's
+  // spectral radius and stability.
+  if (s.joint == Joint::wheel && sum < 0.0f) {
+    const double d_wheel = 1.0 / (hd * hd * static_cast<double>(sum)) - hd * static_cast<double>(kf);
+    const Prediction p = predict_typed(used, static_cast<double>(kf), d_wheel);
+    return {{std::nullopt, std::nullopt, p.spectral_radius, p.stable}, true};
+  }
+  const double d_used = static_cast<double>(sum) - static_cast<double>(hd * kf);
+  return {predict_typed(used, static_cast<double>(kf), d_used), false};
 }
 
 Parameters parameters_of(const Setup& s, double k, double d) {
@@ -136,6 +173,18 @@ Parameters parameters_of(const Setup& s, double k, double d) {
 }
 
 bool meets(const Prediction& p, const Target& t) { return meets_response(p, t.omega, t.damping_ratio); }
+
+// The mouse joint's 0.98 angular damping on a rotating body: a third, real mode in the stretch.
+void add_third_mode_note(const Setup& s, double k, double d, Warnings& warnings) {
+  if (!s.angular_damping()) return;
+  const double w3 = box2d_v2_4_mouse_third_mode_weight(s.m, k, d, s.h, s.rotation_share);
+  if (w3 > kBox2DV24MouseThirdModeLimit) {
+    warnings.push_back({WarningCode::engine_note, w3, kBox2DV24MouseThirdModeLimit, kBox2DV24Model.name,
+                        "the mouse joint's 0.98 angular damping on a rotating body adds a third, real "
+                        "mode to the stretch (value: its weight): `predicted` is the oscillating pair, "
+                        "the motion is not second order"});
+  }
+}
 
 // softtune's exact spring at zeta' = kExactDampingTolerance / 2 when less was asked: its poles differ from
 // the request's by less than the tolerance, and its d + h k stays clear of the engine's zero.
@@ -161,17 +210,24 @@ EngineReport report(const Target& t, const SettingValues& values) {
     if (!p->stable) {
       out.warnings.push_back({WarningCode::engine_unstable, p->spectral_radius, 1.0, kBox2DV24Model.name});
     }
-    if (s.angular_damping()) {
-      const double w3 = box2d_v2_4_mouse_third_mode_weight(m, k, d, h, s.rotation_share);
-      if (w3 > kBox2DV24MouseThirdModeLimit) {
-        out.warnings.push_back({WarningCode::engine_note, w3, kBox2DV24MouseThirdModeLimit, kBox2DV24Model.name,
-                                "the mouse joint's 0.98 angular damping on a rotating body adds a third, real "
-                                "mode to the stretch (value: its weight): `predicted` is the oscillating pair, "
-                                "the motion is not second order"});
-      }
+    add_third_mode_note(s, k, d, out.warnings);
+  } else if (k > 0.0 && k <= kFloatMax && std::abs(d) <= kFloatMax) {
+    // Refused (d + h k too close to 0 or below it), yet the engine runs it: `predicted` is what it does.
+    const Refused r = predict_refused(s, k, d);
+    out.predicted = r.predicted;
+    out.warnings.push_back({WarningCode::engine_refuses, d + h * k, 0.0, kBox2DV24Model.name,
+                            r.rigid ? "stiffness must be > 0 and damping + h stiffness > 0: here h (damping + h "
+                                      "stiffness) rounds to 0 in float (or below it, for the wheel joint), "
+                                      "m_gamma is not inverted and the joint is rigid"
+                                    : "stiffness must be > 0 and damping + h stiffness > 0: below, `predicted` is "
+                                      "the step with the damping that float rounding leaves (an undamped spring "
+                                      "near 0, growing below it)"});
+    if (!r.rigid && !r.predicted.stable) {
+      out.warnings.push_back({WarningCode::engine_unstable, r.predicted.spectral_radius, 1.0, kBox2DV24Model.name});
     }
+    if (!r.rigid) add_third_mode_note(s, k, d, out.warnings);
   } else {
-    // What the engine does instead: m_gamma = 0 makes the joint rigid (k > 0) or absent (k <= 0).
+    // What the engine does instead: k <= 0 makes the joint rigid, a value past float's range infinity.
     out.predicted = {std::nullopt, std::nullopt, 1.0, true};
     out.warnings.push_back({WarningCode::engine_refuses, d + h * k, 0.0, kBox2DV24Model.name,
                             "stiffness must be > 0 and damping + h stiffness > 0, else m_gamma = 0 and "
@@ -216,14 +272,20 @@ EngineReport report(const Target& t, const SettingValues& values) {
       const ResponseSolve solve = solve_response(
           [&](double k_try, double d_try) { return predict_spring(s, k_try, d_try); }, t.omega,
           t.damping_ratio, guess.stiffness, guess.damping);
-      if (solve.met) {
+      // Not met: the solver's nearest, when the engine takes it and it is within the nearest bars.
+      const bool nearest = !solve.met && within_nearest(solve.prediction, t.omega, t.damping_ratio) &&
+                           predict_spring(s, solve.p0, solve.p1).has_value();
+      if (solve.met || nearest) {
         out.exact = parameters_of(s, solve.p0, solve.p1);
         out.exact_predicted = solve.prediction;
-      } else {
+      }
+      if (!solve.met) {
         out.warnings.push_back({WarningCode::engine_inexact, solve.frequency_error, solve.damping_error,
                                 kBox2DV24Model.name,
-                                "its step is implicit Euler, which always damps: zero damping needs "
-                                      "damping + h stiffness = 0, where the joint turns rigid"});
+                                nearest ? "its step is implicit Euler, which always damps: `exact` is the "
+                                          "nearest spring the joint takes"
+                                        : "its step is implicit Euler, which always damps: zero damping needs "
+                                          "damping + h stiffness = 0, where the joint turns rigid"});
       }
     }
   }

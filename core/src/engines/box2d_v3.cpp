@@ -130,13 +130,28 @@ EngineReport report(const Target& t, const SettingValues& values) {
                               "hertz must be > 0 (and finite in float): at 0 b2SolveDistanceJoint skips the "
                               "spring and the body moves free"});
       break;
-    case Legality::divides_by_zero:
-      out.predicted = {std::nullopt, std::nullopt, std::numeric_limits<double>::infinity(), false};
+    case Legality::divides_by_zero: {
+      // Refused, yet the engine runs it. b2MakeSoft computes a1 = 2 zeta + h omega in float: at 0 the bias
+      // rate is infinite and the impulse 0 x infinity, NaN. Elsewhere its algebra holds for a1 < 0 or a1 a
+      // few ulp from 0 (massScale biasRate = h omega^2 a3 stays finite), so `predicted` is the substep map
+      // with what was typed, which may well stay bounded.
+      const float omega_f = 2.0f * std::numbers::pi_v<float> * static_cast<float>(plain.hertz);
+      const float a1 = 2.0f * static_cast<float>(plain.damping_ratio) + static_cast<float>(h) * omega_f;
+      const bool nan = a1 == 0.0f;
+      out.predicted = nan ? Prediction{std::nullopt, std::nullopt, std::numeric_limits<double>::infinity(), false}
+                          : predict_typed(plain, dt, n, warm);
       out.warnings.push_back({WarningCode::engine_refuses, 2.0 * plain.damping_ratio + h * 2.0 * std::numbers::pi * plain.hertz,
                               0.0, kBox2DV3Model.name,
-                              "b2MakeSoft divides by 2 dampingRatio + h omega (h the substep): it must be "
-                              "> 0, and exact mode's negative damping makes it <= 0"});
+                              nan ? "b2MakeSoft divides by 2 dampingRatio + h omega (h the substep), which rounds "
+                                    "to 0 in float here: the spring's impulse is NaN"
+                                  : "b2MakeSoft divides by 2 dampingRatio + h omega (h the substep): it must be "
+                                    "> 0; exact mode's negative damping makes it <= 0, and `predicted` is what "
+                                    "the substeps then do"});
+      if (!out.predicted.stable && !nan) {
+        out.warnings.push_back({WarningCode::engine_unstable, out.predicted.spectral_radius, 1.0, kBox2DV3Model.name});
+      }
       break;
+    }
   }
 
   // Exact: the closed form matching the substep's poles to exp(s h) (then the frame's are exp(s dt)).
@@ -156,13 +171,37 @@ EngineReport report(const Target& t, const SettingValues& values) {
                               "the asked frequency is at or above half the step rate: sampled once per "
                               "b2World_Step it aliases whatever the substeps do"});
     } else if (!out.exact) {
-      // The substep's damping floor: at the asked frequency no spring damps less than this.
+      // The substep's damping floor: at the asked frequency no spring damps less than this. The nearest
+      // legal spring is the closed form at the least ratio above the floor that keeps b2MakeSoft's divisor
+      // clear of 0 (kBox2DV3FloatMargin): given as `exact` when within the nearest bars.
       const double floor = box2d_v3_min_damping_ratio(t.omega, h);
-      out.warnings.push_back({WarningCode::engine_inexact, 0.0, floor - t.damping_ratio, kBox2DV3Model.name,
-                              "the spring runs in both the solve and the relax stage of every substep, "
-                              "which damps at least about pi hertz h (h the substep): less damping needs "
-                              "2 dampingRatio + h omega <= 0, which b2MakeSoft divides by; more substeps "
-                              "lower the floor"});
+      std::optional<Prediction> nearest;
+      double step = 1e-3 * std::max(floor, 1e-6);
+      for (int attempt = 0; attempt < 12 && !nearest && floor + step <= t.damping_ratio + kNearestDampingTolerance;
+           ++attempt, step *= 4.0) {
+        const std::optional<Box2DV3Spring> e = box2d_v3_exact_spring(t.omega, floor + step, h);
+        if (!e || legality(Typed{e->hertz, e->damping_ratio}, h) != Legality::ok) continue;
+        const Prediction p = predict_typed(Typed{e->hertz, e->damping_ratio}, dt, n, warm);
+        if (within_nearest(p, t.omega, t.damping_ratio)) {
+          nearest = p;
+          out.exact = parameters_of(Typed{e->hertz, e->damping_ratio});
+          out.exact_predicted = p;
+        }
+      }
+      if (nearest) {
+        out.warnings.push_back({WarningCode::engine_inexact, *nearest->frequency_hz / frequency_from_angular(t.omega) - 1.0,
+                                *nearest->damping_ratio - t.damping_ratio, kBox2DV3Model.name,
+                                "the spring runs in both the solve and the relax stage of every substep, "
+                                "which damps at least about pi hertz h (h the substep): `exact` is the "
+                                "least-damped spring b2MakeSoft takes, the nearest legal value; more substeps "
+                                "lower the floor"});
+      } else {
+        out.warnings.push_back({WarningCode::engine_inexact, 0.0, floor - t.damping_ratio, kBox2DV3Model.name,
+                                "the spring runs in both the solve and the relax stage of every substep, "
+                                "which damps at least about pi hertz h (h the substep): less damping needs "
+                                "2 dampingRatio + h omega <= 0, which b2MakeSoft divides by; more substeps "
+                                "lower the floor"});
+      }
     }
   }
   return out;

@@ -139,6 +139,12 @@ bool meets_response(const Prediction& p, double omega, double zeta, double scale
          std::abs(*p.damping_ratio - zeta) <= scale * kExactDampingTolerance;
 }
 
+bool within_nearest(const Prediction& p, double omega, double zeta) {
+  return p.stable && p.frequency_hz && p.damping_ratio &&
+         std::abs(*p.frequency_hz / frequency_from_angular(omega) - 1.0) <= kNearestFrequencyTolerance &&
+         std::abs(*p.damping_ratio - zeta) <= kNearestDampingTolerance;
+}
+
 ResponseSolve solve_response(const std::function<std::optional<Prediction>(double p0, double p1)>& predict,
                              double omega, double zeta, double guess0, double guess1) {
   const double asked_hz = omega / (2.0 * std::numbers::pi);

@@ -33,6 +33,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "soft_substeps.h"
 #include "softtune/designer.h"
@@ -81,6 +82,41 @@ std::optional<Prediction> predict_spring(const Step& s, double k, double c) {
   return predict_from_step_map(soft_substeps::power(soft_substeps::substep_map(s.m, k, c, s.h, s.a), s.n), s.dt);
 }
 
+// What the engine does with a refused spring, as typed (`typed`, in the spring mode `mode`): SpringPart
+// computes k and c in float from the float fields and the body's float inverse mass (SpringPart.h
+// CalculateSpringPropertiesWithFrequencyAndDamping: omega = 2 pi f, k = m_eff omega^2, c = 2 m_eff zeta
+// omega; ...WithMassNormalizedStiffnessAndDamping: k / K, c / K), then softness = 1 / (h (c + h k)). Where
+// c + h k rounds to 0 the softness is infinite, the row's effective mass 1 / (K + softness) is 0 and
+// AxisConstraintPart::IsActive (mEffectiveMass != 0) turns the row off: the body moves free, and released at
+// rest it stays (measured in the real engine). Otherwise the algebra of the soft row holds for any sign of the softness, so the step is the same
+// implicit-Euler map with the damping the float sum leaves, c' = (c + h k)_float - h k: an undamped spring
+// where the sum rounds to a few 1e-7 of h k (exact mode at zeta 0, one collision step), a growing one below
+// (exact mode's negative damping at collisionSteps > 1). Empty where the spring is not soft (k <= 0).
+std::optional<Prediction> predict_refused(const Step& s, int mode, const Parameters& typed) {
+  const float inv_k = 1.0f / static_cast<float>(s.m);  // MotionProperties: mInvMass = 1 / mass
+  const float hf = static_cast<float>(s.h);
+  float k = 0.0f, c = 0.0f;
+  const float damping = static_cast<float>(parameter_value(typed, "SpringSettings::mDamping").value_or(0.0));
+  if (mode == 0) {
+    const float m_eff = 1.0f / inv_k;
+    const float omega = 2.0f * std::numbers::pi_v<float> *
+                        static_cast<float>(parameter_value(typed, "SpringSettings::mFrequency").value_or(0.0));
+    k = m_eff * (omega * omega);
+    c = 2.0f * m_eff * damping * omega;
+  } else {
+    const float stiffness = static_cast<float>(parameter_value(typed, "SpringSettings::mStiffness").value_or(0.0));
+    k = mode == 2 ? stiffness / inv_k : stiffness;
+    c = mode == 2 ? damping / inv_k : damping;
+  }
+  if (!(k > 0.0f) || !std::isfinite(k) || !std::isfinite(c)) return std::nullopt;
+  const float hk = hf * k;
+  const float sum = c + hk;  // SpringPart.h: 1.0f / (inDeltaTime * (inDamping + inDeltaTime * inStiffness))
+  if (hf * sum == 0.0f) return Prediction{std::nullopt, std::nullopt, 1.0, true};  // free: poles 1 and a
+  const double hd = static_cast<double>(hf), kd = static_cast<double>(k);
+  const double c_used = static_cast<double>(sum) - hd * kd;
+  return predict_from_step_map(soft_substeps::power(soft_substeps::substep_map(s.m, kd, c_used, hd, s.a), s.n), s.dt);
+}
+
 // The SpringSettings that make the engine compute (k, c), in the chosen mode; empty when the mode cannot
 // (FrequencyAndDamping needs k > 0). The engine's m_eff is the target's effective mass.
 std::optional<Parameters> parameters_of(int mode, double m, double k, double c) {
@@ -119,6 +155,17 @@ EngineReport report(const Target& t, const SettingValues& values) {
   if (p) {
     out.predicted = *p;
     if (!p->stable) out.warnings.push_back({WarningCode::engine_unstable, p->spectral_radius, 1.0, kJoltModel.name});
+  } else if (const std::optional<Prediction> r = predict_refused(s, plain ? mode : 1, out.parameters)) {
+    // Refused, yet the engine runs it: `predicted` is what it does.
+    out.predicted = *r;
+    out.warnings.push_back({WarningCode::engine_refuses, c + s.h * k, 0.0, kJoltModel.name,
+                            r->frequency_hz ? "damping + h stiffness must be > 0 at the collision step h: below, "
+                                              "`predicted` is the step with the damping float rounding leaves "
+                                              "(an undamped spring near 0, growing below it)"
+                                            : "damping + h stiffness rounds to 0 in float at the collision step h: "
+                                              "SpringPart divides by it, the row's effective mass is 0 and the "
+                                              "constraint is inactive: the body moves free"});
+    if (!r->stable) out.warnings.push_back({WarningCode::engine_unstable, r->spectral_radius, 1.0, kJoltModel.name});
   } else {
     out.predicted = {std::nullopt, std::nullopt, 1.0, true};
     out.warnings.push_back({WarningCode::engine_refuses, c + s.h * k, 0.0, kJoltModel.name,
@@ -146,11 +193,20 @@ EngineReport report(const Target& t, const SettingValues& values) {
     out.exact = parameters_of(mode, s.m, candidate->k, candidate->c);
     out.exact_predicted = *e;
   } else if (e && e->frequency_hz && e->damping_ratio) {
+    // The least-damped spring is the nearest the engine takes: given when within the nearest bars.
+    const bool nearest = within_nearest(*e, t.omega, t.damping_ratio);
+    if (nearest) {
+      out.exact = parameters_of(mode, s.m, candidate->k, candidate->c);
+      out.exact_predicted = *e;
+    }
     out.warnings.push_back({WarningCode::engine_inexact, *e->frequency_hz / frequency_from_angular(t.omega) - 1.0,
                             *e->damping_ratio - t.damping_ratio, kJoltModel.name,
-                            "each collision step is implicit Euler after mLinearDamping's velocity scale, "
-                            "which always damps: less damping needs damping + h stiffness <= 0, which "
-                            "SpringPart divides by"});
+                            nearest ? "each collision step is implicit Euler after mLinearDamping's velocity "
+                                      "scale, which always damps: `exact` is the least-damped spring it takes, "
+                                      "the nearest legal value"
+                                    : "each collision step is implicit Euler after mLinearDamping's velocity scale, "
+                                      "which always damps: less damping needs damping + h stiffness <= 0, which "
+                                      "SpringPart divides by"});
   } else {
     out.warnings.push_back({WarningCode::engine_inexact, 0.0, 0.0, kJoltModel.name,
                             "no spring reaches the asked poles: they pass the collision step's Nyquist "

@@ -84,6 +84,37 @@ std::optional<Prediction> predict_spring(const Step& s, double k, double c) {
   return predict_from_step_map(step_map(s, k, c), s.dt);
 }
 
+// What the engine does with a refused (k, c), k > 0 and finite in f32: combine_coefficients computes, in
+// f32 at the substep h from the typed stiffness k_t and damping c_t (per unit mass for AccelerationBased),
+//   erp_inv_dt = k_t inv(h k_t + c_t),  cfm = inv(h h k_t + h c_t)      (utils::inv(0) = 0)
+// and the first pass gives v1 = v - g (v + erp_inv_dt x), g = dot_jj / (dot_jj + cfm_gain) with
+// cfm_gain = dot_jj cfm (AccelerationBased) or cfm (ForceBased), dot_jj = 1 / m_eff. The two sums round
+// on their own: where they are a few ulp of h k (exact mode at zeta 0, one substep per softtune step) their
+// ratio, not h, sets the spring, and a sum that rounds to 0 locks the velocity (cfm 0) or drops the spring
+// (erp 0). Below zero the same algebra is implicit Euler with the negative damping, which grows.
+Prediction predict_refused(const Step& s, double k, double c) {
+  const double scale = s.acceleration ? 1.0 / s.m : 1.0;
+  const float hf = static_cast<float>(static_cast<float>(s.dt) / static_cast<float>(s.n));
+  const float kf = static_cast<float>(k * scale), cf = static_cast<float>(c * scale);
+  const float hk = hf * kf, hhk = hf * hf * kf, hc = hf * cf;
+  const float sum1 = hk + cf, sum2 = hhk + hc;
+  auto inv = [](float x) { return x == 0.0f ? 0.0f : 1.0f / x; };
+  const double erp = static_cast<double>(kf * inv(sum1));
+  const double cfm = static_cast<double>(inv(sum2));
+  const double dot_jj = 1.0 / s.m;
+  const double cfm_gain = s.acceleration ? dot_jj * cfm : cfm;
+  const double g = dot_jj / (dot_jj + cfm_gain);
+  const double h = static_cast<double>(hf);
+  Eigen::Matrix2d sub;
+  sub(1, 0) = -g * erp;
+  sub(1, 1) = 1.0 - g;
+  sub(0, 0) = 1.0 + h * sub(1, 0);
+  sub(0, 1) = h * sub(1, 1);
+  Eigen::Matrix2d a = soft_substeps::power(sub, s.n);
+  a.row(1) *= s.damping_scale;
+  return predict_from_step_map(a, s.dt);
+}
+
 Parameters parameters_of(const Step& s, double k, double c) {
   if (s.acceleration) {
     return {{"JointMotor::model", 0.0, "", kMotorModels[0]},
@@ -110,6 +141,18 @@ EngineReport report(const Target& t, const SettingValues& values) {
   if (const std::optional<Prediction> p = predict_spring(s, k, c)) {
     out.predicted = *p;
     if (!p->stable) out.warnings.push_back({WarningCode::engine_unstable, p->spectral_radius, 1.0, kRapierModel.name});
+  } else if (k > 0.0 && k * (s.acceleration ? 1.0 / s.m : 1.0) <= kFloatMax &&
+             std::abs(c) * (s.acceleration ? 1.0 / s.m : 1.0) <= kFloatMax) {
+    // Refused, yet the engine runs it: `predicted` is what it does.
+    out.predicted = predict_refused(s, k, c);
+    out.warnings.push_back({WarningCode::engine_refuses, c + s.h * k, 0.0, kRapierModel.name,
+                            "the motor needs damping + h stiffness > 0 at the substep h: combine_coefficients "
+                            "inverts h stiffness + damping and h^2 stiffness + h damping, each rounded in f32; "
+                            "`predicted` is the step with those (a locked or undamped motor near 0, a growing "
+                            "one below)"});
+    if (!out.predicted.stable) {
+      out.warnings.push_back({WarningCode::engine_unstable, out.predicted.spectral_radius, 1.0, kRapierModel.name});
+    }
   } else {
     out.predicted = {std::nullopt, std::nullopt, 1.0, true};
     out.warnings.push_back({WarningCode::engine_refuses, c + s.h * k, 0.0, kRapierModel.name,
@@ -155,10 +198,18 @@ EngineReport report(const Target& t, const SettingValues& values) {
     out.exact = parameters_of(s, candidate->k, candidate->c);
     out.exact_predicted = *e;
   } else if (e && e->frequency_hz && e->damping_ratio) {
+    // The least-damped motor (or the solver's nearest) is given when within the nearest bars.
+    const bool nearest = within_nearest(*e, t.omega, t.damping_ratio) && legal(s, candidate->k, candidate->c);
+    if (nearest) {
+      out.exact = parameters_of(s, candidate->k, candidate->c);
+      out.exact_predicted = *e;
+    }
     out.warnings.push_back({WarningCode::engine_inexact, frequency_error(*e, t), *e->damping_ratio - t.damping_ratio,
                             kRapierModel.name,
-                            "each substep is implicit Euler, which always damps, and linear damping adds to it: "
-                            "less damping needs damping + h stiffness <= 0, where the motor locks"});
+                            nearest ? "each substep is implicit Euler, which always damps, and linear damping adds "
+                                      "to it: `exact` is the nearest legal motor"
+                                    : "each substep is implicit Euler, which always damps, and linear damping adds to it: "
+                                      "less damping needs damping + h stiffness <= 0, where the motor locks"});
   } else {
     out.warnings.push_back({WarningCode::engine_inexact, 0.0, 0.0, kRapierModel.name,
                             "no motor reaches the asked poles: they pass the substep's Nyquist limit"});

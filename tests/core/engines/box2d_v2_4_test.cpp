@@ -56,14 +56,27 @@ TEST(Box2DV24Model, ExactParametersAreTheExactSoftSpring) {
   }
 }
 
-TEST(Box2DV24Model, ASpringTheEngineTurnsRigidIsReportedNotPredicted) {
-  // Exact mode at zeta = 0 gives c' = -h k': Box2D sets m_gamma = 0 and the joint goes rigid.
-  const double m = 1.0, h = 1.0 / 60.0, k = 1000.0;
-  const EngineReport r = kBox2DV24Model.report(target(5.0, 0.0, m, h, {k, -h * k}),
-                                               default_settings(kBox2DV24Model));
-  EXPECT_FALSE(r.predicted.frequency_hz);
-  ASSERT_FALSE(r.warnings.empty());
-  EXPECT_EQ(r.warnings[0].code, WarningCode::engine_refuses);
+TEST(Box2DV24Model, ARefusedExportPredictsWhatTheEngineRuns) {
+  // Exact mode at zeta = 0 gives d = -h k: InitVelocityConstraints computes m_gamma = h (d + h k) in float.
+  // Where that is exactly 0 (h = 1/64, k = 1024: h k = 16 = -d in float) m_gamma = 0 and the joint is rigid.
+  const double m = 1.0;
+  {
+    const double h = 1.0 / 64.0, k = 1024.0;
+    testing::expect_refused_and_held(kBox2DV24Model.report(target(5.0, 0.0, m, h, {k, -h * k}), default_settings(kBox2DV24Model)));
+  }
+  // At h = 1/60 the float sum keeps a few ulp of h k: m_gamma is huge, the soft mass ~ 1 / m_gamma, and the
+  // step is symplectic Euler on an undamped spring, cos(omega_d h) = 1 - h^2 k / (2 m).
+  {
+    const double h = 1.0 / 60.0, k = 1000.0;
+    const float sum = static_cast<float>(-h * k) + static_cast<float>(h) * static_cast<float>(k);
+    ASSERT_NE(sum, 0.0f);
+    const EngineReport r = kBox2DV24Model.report(target(5.0, 0.0, m, h, {k, -h * k}), default_settings(kBox2DV24Model));
+    ASSERT_TRUE(r.predicted.frequency_hz && r.predicted.damping_ratio);
+    EXPECT_NEAR(*r.predicted.frequency_hz, std::acos(1.0 - h * h * k / (2.0 * m)) / (2.0 * testing::kPi * h), 1e-5);
+    EXPECT_NEAR(*r.predicted.damping_ratio, 0.0, 1e-5);
+    EXPECT_NEAR(r.predicted.spectral_radius, 1.0, 1e-5);
+    EXPECT_EQ(r.warnings[0].code, WarningCode::engine_refuses);
+  }
 }
 
 }  // namespace

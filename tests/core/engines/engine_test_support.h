@@ -34,4 +34,14 @@ inline void expect_implicit_euler(const Eigen::Matrix2d& a, double m, double k, 
   }
 }
 
+/// A refused export the engine holds still (a rigid joint, an inactive row): refused first, no frequency,
+/// and the marginal poles 1 of a stretch that stays where it was released.
+inline void expect_refused_and_held(const EngineReport& r) {
+  EXPECT_FALSE(r.predicted.frequency_hz);
+  EXPECT_TRUE(r.predicted.stable);
+  EXPECT_EQ(r.predicted.spectral_radius, 1.0);
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_EQ(r.warnings[0].code, WarningCode::engine_refuses);
+}
+
 }  // namespace softtune::engines::testing

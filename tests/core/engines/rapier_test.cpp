@@ -144,16 +144,21 @@ TEST(RapierModel, ExactUndampedStaysClearOfTheLock) {
   EXPECT_NEAR(*r.exact_predicted->frequency_hz, hz, hz * kExactFrequencyTolerance);
 }
 
-TEST(RapierModel, SoftExactExportAtTheFrameStepIsRefused) {
+TEST(RapierModel, SoftExactExportAtTheFrameStepIsRefusedAndPredicted) {
   // softtune's exact mode at zeta = 0 for h = 1/60 gives c' = -h k'; Rapier's substep is h / 4, so
-  // h^2 k + h c < 0 at its substep: a negative compliance. And exactly 0 at one iteration: the motor locks.
+  // h^2 k + h c < 0 at its substep: a negative compliance, whose algebra is implicit Euler at h / 4 with the
+  // negative damping: per substep det = m / (m + hs c + hs^2 k), a complex pair of modulus sqrt(det), so
+  // per step (4 substeps) the spectral radius is det^2 > 1.
   const double m = 1.0, h = 1.0 / 60.0, k = 1000.0;
   const EngineReport r = kRapierModel.report(target(5.0, 0.0, m, h, {k, -h * k}), default_settings(kRapierModel));
-  EXPECT_FALSE(r.predicted.frequency_hz);
   EXPECT_EQ(r.warnings[0].code, WarningCode::engine_refuses);
   EXPECT_EQ(r.warnings[0].engine, "rapier");
-  const EngineReport one = kRapierModel.report(target(5.0, 0.0, m, h, {k, -h * k * (1 - 1e-13)}), rapier_settings(1));
-  EXPECT_EQ(one.warnings[0].code, WarningCode::engine_refuses);
+  const double hs = h / 4.0, det = m / (m - hs * h * k + hs * hs * k);
+  EXPECT_FALSE(r.predicted.stable);
+  EXPECT_NEAR(r.predicted.spectral_radius, det * det, 1e-6);  // the model steps the f32 h and k
+  // At one iteration and h = 1/64, k = 1024, c = -16 both f32 sums are exactly 0: utils::inv gives 0, the
+  // motor's cfm and erp vanish and the first pass zeroes the velocity: the stretch holds (rigid).
+  testing::expect_refused_and_held(kRapierModel.report(target(5.0, 0.0, m, 1.0 / 64.0, {1024.0, -16.0}), rapier_settings(1)));
 }
 
 TEST(RapierModel, LinearDampingIsCompensatedBySolving) {
@@ -187,9 +192,11 @@ TEST(RapierModel, NoExportBreaksTheEnginesRulesOverASweep) {
                 const double fps = 60.0, h = 1.0 / fps, hz = ratio * fps, omega = 2.0 * kPi * hz;
                 const SpringConstants s = exact_mode ? exact_spring(m, omega, zeta, h).spring : spring_constants(m, omega, zeta);
                 const EngineReport r = kRapierModel.report(target(hz, zeta, m, h, s), rapier_settings(n, model, d));
+                // A refused export says so first; its prediction is the engine's step with what was typed.
+                const bool refuses = !r.warnings.empty() && r.warnings.front().code == WarningCode::engine_refuses;
+                if (refuses) ++refused;
                 if (!r.predicted.frequency_hz) {
-                  ++refused;
-                  EXPECT_EQ(r.warnings.front().code, WarningCode::engine_refuses);
+                  EXPECT_TRUE(refuses);
                 }
                 if (!r.exact) {
                   EXPECT_EQ(r.warnings.back().code, WarningCode::engine_inexact);
@@ -203,8 +210,10 @@ TEST(RapierModel, NoExportBreaksTheEnginesRulesOverASweep) {
                 EXPECT_GE(c + hs * k, kRapierFloatMargin * hs * k) << ratio << " " << zeta << " " << m << " " << n;
                 const Prediction p = predict_from_step_map(rapier_step_map(m, k, c, h, n, d), h);
                 ASSERT_TRUE(p.frequency_hz && p.damping_ratio);
-                EXPECT_NEAR(*p.frequency_hz / hz, 1.0, kExactFrequencyTolerance);
-                EXPECT_NEAR(*p.damping_ratio, zeta, kExactDampingTolerance);
+                // The nearest legal value (flagged engine_inexact) within 1 % / 0.02, else the exact bars.
+                const bool nearest = !r.warnings.empty() && r.warnings.back().code == WarningCode::engine_inexact;
+                EXPECT_NEAR(*p.frequency_hz / hz, 1.0, nearest ? kNearestFrequencyTolerance : kExactFrequencyTolerance);
+                EXPECT_NEAR(*p.damping_ratio, zeta, nearest ? kNearestDampingTolerance : kExactDampingTolerance);
               }
             }
           }

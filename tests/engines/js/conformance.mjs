@@ -38,7 +38,54 @@ function measureAgainst(x, dt, frequencyHz, zeta, floor) {
                   measured: `${fit.frequencyHz} Hz zeta ${fit.dampingRatio}` };
 }
 
+/**
+ * A refused plain export (engine_refuses) is still run: its `predicted` is what the engine does with it. With
+ * no frequency it is either rigid (stable, spectral radius 1: the stretch holds within kRigid of x0) or lost
+ * (unstable: the motion turns non-finite or leaves kGrown x0); a growing response (stable false) must leave
+ * kGrown x0 where its spectral radius says it does within the run, and its start, up to kFitLimit x0 (the
+ * plank's turn stays near linear), is fitted against the prediction when it holds kMinGrowthSamples samples.
+ */
+export const kRigid = 1e-3;
+export const kGrown = 2;
+export const kFitLimit = 4;
+const kMinGrowthSamples = 24;
+
+function grew(x) {
+  return x.some((v) => !Number.isFinite(v) || Math.abs(v) > kGrown * Math.abs(x[0]));
+}
+
+function measureUnpredictable(x, p) {
+  if (p.stable) return { rigid: Math.max(...x.map((v) => (Number.isFinite(v) ? Math.abs(v - x[0]) : Infinity))) / Math.abs(x[0]) };
+  return { lost: grew(x) };
+}
+
+function measureGrowing(x, dt, p, floor) {
+  // The envelope grows by the spectral radius per step: where that stays below 2 kGrown over the run (a
+  // slow growth), the run need not leave kGrown x0, and the fit holds it instead.
+  const visible = p.spectral_radius ** (x.length - 1) >= 2 * kGrown;
+  const out = { grows: grew(x) || !visible };
+  let end = x.findIndex((v) => !Number.isFinite(v) || Math.abs(v) > kFitLimit * Math.abs(x[0]));
+  if (end < 0) end = x.length;
+  if (end >= kMinGrowthSamples) {
+    // The window grows to its end: the fit's floor, measured from the last sample, never cuts it.
+    const fit = fitResponse(x.slice(0, end), dt, floor);
+    if (fit) {
+      out.frequency = fit.frequencyHz / p.frequency_hz - 1;
+      out.damping = fit.dampingRatio - p.damping_ratio;
+      out.measured = `${fit.frequencyHz} Hz zeta ${fit.dampingRatio}`;
+    }
+  }
+  if (!visible && out.frequency === undefined) out.grows = false;  // neither seen to grow nor fitted
+  return out;
+}
+
 function within(m) {
+  if (m.rigid !== undefined) return m.rigid <= kRigid;
+  if (m.lost !== undefined) return m.lost;
+  if (m.grows !== undefined) {
+    return m.grows && (m.frequency === undefined ||
+                       (Math.abs(m.frequency) <= kFrequencyTolerance && Math.abs(m.damping) <= kDampingTolerance));
+  }
   if (m.deadBeat !== undefined) return m.deadBeat;
   if (m.slowRate !== undefined) return Math.abs(m.slowRate) <= kFrequencyTolerance;
   return Math.abs(m.frequency) <= kFrequencyTolerance && Math.abs(m.damping) <= kDampingTolerance;
@@ -51,6 +98,20 @@ export function tune(request) {
   const out = spawnSync(bin, ['tune', '--request', '-'], { input: JSON.stringify(request), encoding: 'utf8' });
   if (out.status !== 0) throw new Error(`softtune tune failed (${out.status}): ${out.stderr}\n${JSON.stringify(request)}`);
   return JSON.parse(out.stdout);
+}
+
+/** The identify answer of the real CLI (SOFTTUNE_BIN) for a request object (docs/identify.md). */
+export function identify(request) {
+  const bin = process.env.SOFTTUNE_BIN;
+  if (!bin) throw new Error('SOFTTUNE_BIN is not set (ctest sets it to the softtune binary)');
+  const out = spawnSync(bin, ['identify', '--request', '-'], { input: JSON.stringify(request), encoding: 'utf8' });
+  if (out.status !== 0) throw new Error(`softtune identify failed (${out.status}): ${out.stderr}`);
+  return JSON.parse(out.stdout);
+}
+
+/** The fit of a trajectory sampled every dt: {frequencyHz, dampingRatio} or null (prony.mjs). */
+export function fit(x, dt, floor = kEngineFitFloor) {
+  return fitResponse(x, dt, floor);
 }
 
 /**
@@ -74,6 +135,32 @@ export function grid(count, extra) {
       damping_ratio: zetas[(i * 5) % zetas.length],
       mode: Math.floor(i / 3) % 2 === 0 ? 'standard' : 'exact',
       effective_mass: masses[(i * 11) % masses.length],
+    };
+    cases.push({ index: i, request, ...extra(i, request) });
+  }
+  return cases;
+}
+
+/**
+ * The refused plain exports' grid: exact mode at small damping ratios, where softtune's k', c' (matched at
+ * the step 1 / (fps substeps)) have c' + h k' = 0 (zeta 0) or, at an engine substep shorter than that step,
+ * below 0: what the engine does with them is its `predicted`. `extra(i)` adds the engine's settings.
+ */
+export function refusedGrid(count, extra) {
+  const ratios = [0.02, 0.05, 0.1, 0.2];
+  const zetas = [0, 0.01, 0.05];
+  const masses = [0.05, 1, 20];
+  const fpss = [30, 60, 120];
+  const cases = [];
+  for (let i = 0; i < count; ++i) {
+    const fps = fpss[(i * 5) % fpss.length];
+    const request = {
+      fps,
+      substeps: (i * 7) % 4 === 3 ? 2 : 1,
+      frequency_hz: ratios[i % ratios.length] * fps,
+      damping_ratio: zetas[(i * 7 + Math.floor(i / 12)) % zetas.length],
+      mode: 'exact',
+      effective_mass: masses[(i * 11 + Math.floor(i / 9)) % masses.length],
     };
     cases.push({ index: i, request, ...extra(i, request) });
   }
@@ -122,21 +209,25 @@ export function conform(engineName, cases, run, { maxSteps = 3000, fitFloor = ()
     const steps = stepsFor(c.request, maxSteps);
     const row = { case: c, report };
     const label = `${engineName} #${c.index} ${JSON.stringify(c.request)} ${c.label ?? ''}`;
-    // The plain export, against the model's prediction.
-    if (report.predicted.frequency_hz === null) {
-      if (!hasWarning(report, 'engine_refuses')) failures.push(`${label}: no prediction and no engine_refuses`);
-      row.refused = true;
+    // The plain export, against the model's prediction; a refused one too (what the engine does with it).
+    const p = report.predicted;
+    if (hasWarning(report, 'engine_refuses')) row.refused = true;
+    if (p.frequency_hz === null && !row.refused) {
+      failures.push(`${label}: no prediction and no engine_refuses`);
     } else {
       const x = run(c, report, report.parameters, dt, steps);
-      const m = report.predicted.spectral_radius < kDeadBeat
-        ? { deadBeat: deadBeatHolds(x, report.predicted.spectral_radius) }
-        : measureAgainst(x, dt, report.predicted.frequency_hz, report.predicted.damping_ratio, fitFloor(c));
+      let m;
+      if (p.frequency_hz === null) m = measureUnpredictable(x, p);
+      else if (!p.stable) m = measureGrowing(x, dt, p, fitFloor(c));
+      else if (p.spectral_radius < kDeadBeat) m = { deadBeat: deadBeatHolds(x, p.spectral_radius) };
+      else m = measureAgainst(x, dt, p.frequency_hz, p.damping_ratio, fitFloor(c));
       if (!m) failures.push(`${label}: the plain run could not be fitted`);
       else {
         row.plain = m;
         if (!within(m)) {
           failures.push(`${label}: plain ${JSON.stringify(m)}, predicted ` +
-                        `${report.predicted.frequency_hz} Hz zeta ${report.predicted.damping_ratio}`);
+                        `${p.frequency_hz} Hz zeta ${p.damping_ratio} radius ${p.spectral_radius} stable ${p.stable}` +
+                        (row.refused ? ` (refused ${JSON.stringify(report.parameters)})` : ''));
         }
       }
     }
@@ -145,10 +236,19 @@ export function conform(engineName, cases, run, { maxSteps = 3000, fitFloor = ()
       if (!hasWarning(report, 'engine_inexact')) failures.push(`${label}: exact is null without engine_inexact`);
       row.inexact = true;
     } else {
+      // The nearest legal value (engine_inexact beside a non-null exact): its prediction is within 1 % / 0.02
+      // of the request, and the engine runs that prediction.
+      const ep = report.exact_predicted;
+      row.nearest = hasWarning(report, 'engine_inexact');
+      if (row.nearest && !(Math.abs(ep.frequency_hz / c.request.frequency_hz - 1) <= kFrequencyTolerance &&
+                           Math.abs(ep.damping_ratio - c.request.damping_ratio) <= kDampingTolerance && ep.stable)) {
+        failures.push(`${label}: the nearest exact's prediction ${JSON.stringify(ep)} is off the request`);
+      }
+      const aim = row.nearest ? ep : { frequency_hz: c.request.frequency_hz, damping_ratio: c.request.damping_ratio };
       const x = run(c, report, report.exact, dt, steps);
-      const m = report.exact_predicted.spectral_radius < kDeadBeat
-        ? { deadBeat: deadBeatHolds(x, report.exact_predicted.spectral_radius) }
-        : measureAgainst(x, dt, c.request.frequency_hz, c.request.damping_ratio, fitFloor(c));
+      const m = ep.spectral_radius < kDeadBeat
+        ? { deadBeat: deadBeatHolds(x, ep.spectral_radius) }
+        : measureAgainst(x, dt, aim.frequency_hz, aim.damping_ratio, fitFloor(c));
       if (!m) failures.push(`${label}: the exact run could not be fitted`);
       else {
         row.exact = m;
@@ -169,9 +269,11 @@ function worst(values) {
 
 /** The conformance table: cases, runs, and the worst errors against predicted and, for exact, the request. */
 export function table(engineName, rows) {
-  const fitted = (m) => m && m.slowRate === undefined && m.deadBeat === undefined;
-  const plain = rows.filter((r) => fitted(r.plain)).map((r) => r.plain);
-  const exact = rows.filter((r) => fitted(r.exact)).map((r) => r.exact);
+  const fitted = (m) => m && m.frequency !== undefined && m.slowRate === undefined && m.deadBeat === undefined;
+  const plain = rows.filter((r) => !r.refused && fitted(r.plain)).map((r) => r.plain);
+  const refused = rows.filter((r) => r.refused);
+  const refusedFitted = refused.filter((r) => fitted(r.plain)).map((r) => r.plain);
+  const exact = rows.filter((r) => !r.nearest && fitted(r.exact)).map((r) => r.exact);
   const deadBeat = rows.filter((r) => r.plain?.deadBeat !== undefined).length +
                    rows.filter((r) => r.exact?.deadBeat !== undefined).length;
   const slowPlain = rows.filter((r) => r.plain && r.plain.slowRate !== undefined).map((r) => r.plain.slowRate);
@@ -181,9 +283,18 @@ export function table(engineName, rows) {
     `${engineName} conformance: ${rows.length} cases (${rows.filter((r) => r.case.request.mode === 'exact').length} exact mode, ` +
       `${rows.filter((r) => r.case.body === 'rotating_plank').length} rotating plank)`,
     `  plain export vs predicted: ${plain.length} runs, worst frequency ${fmt(worst(plain.map((p) => p.frequency)))}, ` +
-      `worst damping ratio ${worst(plain.map((p) => p.damping)).toFixed(4)}; ${rows.filter((r) => r.refused).length} refused (engine_refuses)`,
+      `worst damping ratio ${worst(plain.map((p) => p.damping)).toFixed(4)}; ${refused.length} refused (engine_refuses)`,
+    `  refused exports run vs predicted: ${refusedFitted.length} fitted (worst frequency ` +
+      `${fmt(worst(refusedFitted.map((p) => p.frequency)))}, worst damping ratio ` +
+      `${worst(refusedFitted.map((p) => p.damping)).toFixed(4)}), ${refused.filter((r) => r.plain?.grows).length} growing ` +
+      `as predicted, ${refused.filter((r) => r.plain?.rigid !== undefined).length} rigid, ` +
+      `${refused.filter((r) => r.plain?.lost).length} lost (NaN) as predicted, ` +
+      `${refused.filter((r) => r.case.request.mode === 'exact' && r.case.request.damping_ratio === 0).length} of them exact mode at zeta 0`,
     `  exact vs request:          ${exact.length} runs, worst frequency ${fmt(worst(exact.map((p) => p.frequency)))}, ` +
       `worst damping ratio ${worst(exact.map((p) => p.damping)).toFixed(4)}; ${rows.filter((r) => r.inexact).length} null (engine_inexact)`,
+    `  nearest legal exact (engine_inexact, predicted within 1 % / 0.02): ${rows.filter((r) => r.nearest).length} runs, ` +
+      `measured against their prediction (worst frequency ${fmt(worst(rows.filter((r) => r.nearest && fitted(r.exact)).map((r) => r.exact.frequency)))}, ` +
+      `worst damping ratio ${worst(rows.filter((r) => r.nearest && fitted(r.exact)).map((r) => r.exact.damping)).toFixed(4)})`,
     `  over-damped, fast pole < ${kUnobservablePole} per step (slow pole only): ${slowPlain.length} plain runs, worst ` +
       `slow rate ${fmt(worst(slowPlain))}; ${slowExact.length} exact runs, worst slow rate ${fmt(worst(slowExact))}`,
     `  dead-beat (every pole < ${kDeadBeat} per step, held to the spectral radius): ${deadBeat} runs`,

@@ -3,7 +3,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 
-import { conform, grid, tune } from '../js/conformance.mjs';
+import { conform, grid, refusedGrid, tune } from '../js/conformance.mjs';
 import { initRapier, runRapier } from './rapier_run.mjs';
 
 await initRapier();
@@ -64,8 +64,43 @@ test('the issue: the default step is softtune substeps 4, and exact at zeta 0 st
   assert.ok(Math.abs(rapier.predicted.frequency_hz / four.achieved.frequency_hz - 1) < 1e-9);
   assert.ok(Math.abs(rapier.predicted.damping_ratio - four.achieved.damping_ratio) < 1e-9);
   const exact = tune({ ...ask, substeps: 1, mode: 'exact' }).engines.rapier;
-  assert.equal(exact.predicted.frequency_hz, null);  // c' = -h k' at 1/60 is negative compliance at 1/240
+  // c' = -h k' at 1/60 is negative compliance at 1/240: refused, and `predicted` says it grows.
   assert.ok(exact.warnings.some((w) => w.code === 'engine_refuses'));
+  assert.equal(exact.predicted.stable, false);
   const h = 1 / 240, k = exact.exact['JointMotor::stiffness'], c = exact.exact['JointMotor::damping'];
   assert.ok(c + h * k >= 1e-4 * h * k);
+});
+
+// Refused plain exports (exact mode's c' + h k' at or below 0 at the substep) run in Rapier: each does what
+// its `predicted` says (growing with the negative damping; at one iteration, where the two f32 sums round
+// to a few ulp, the motor their ratio sets, or locked where one rounds to 0).
+const refusedCases = refusedGrid(30, (i) => {
+  const settings = { numSolverIterations: iterations[i % iterations.length] };
+  if (i % 2 === 1) settings.motorModel = 'ForceBased';
+  const body = i % 5 === 3 ? 'rotating_plank' : 'point';
+  const dim = body === 'point' && i % 4 === 2 ? 3 : 2;
+  return { body, dim, label: `${body} ${dim}d ${JSON.stringify(settings)}`, settings };
+}).map((c) => ({ ...c, request: { ...c.request, engine_settings: { rapier: c.settings } } }));
+
+test('a refused export runs in Rapier as predicted', () => {
+  const { rows, failures, table } = conform('rapier', refusedCases, run, { maxSteps: 300 });
+  console.log(table);
+  assert.deepEqual(failures, []);
+  assert.ok(rows.filter((r) => r.refused).length >= 20);
+});
+
+// Near misses: linear damping d damps at least about d / (2 omega), so zeta 0 has no exact motor; where that
+// floor is within 0.02 the nearest legal motor is given as `exact`, flagged engine_inexact, and Rapier runs
+// it as its exact_predicted says.
+const nearCases = [[3, 0.3, 1], [1.5, 0.3, 20], [5, 0.8, 0.05], [3, 0.6, 2]].map(([hz, d, m], i) => ({
+  index: i, body: i === 3 ? 'rotating_plank' : 'point', dim: 2, label: `near miss, linearDamping ${d}`,
+  request: { fps: 60, substeps: 1, frequency_hz: hz, damping_ratio: 0, mode: 'standard', effective_mass: m,
+             engine_settings: { rapier: { linearDamping: d, motorModel: i % 2 ? 'ForceBased' : 'AccelerationBased' } } },
+}));
+
+test('a near miss gives the nearest legal value, and Rapier runs it as predicted', () => {
+  const { rows, failures, table } = conform('rapier', nearCases, run, { maxSteps: 300 });
+  console.log(table);
+  assert.deepEqual(failures, []);
+  assert.equal(rows.filter((r) => r.nearest).length, nearCases.length);
 });

@@ -124,6 +124,16 @@ inline constexpr double kExactFrequencyTolerance = 1e-3;
 inline constexpr double kExactDampingTolerance = 5e-3;
 inline constexpr int kMaxSolveEvaluations = 400;
 
+/// The nearest legal answer's bars, the real-engine conformance bars (1 % frequency, 0.02 damping ratio): where
+/// no parameters the engine takes meet the exact tolerances, the nearest it takes is still given as `exact`
+/// when its prediction is stable and within these of the request, flagged by an engine_inexact warning that
+/// carries its predicted errors (value: relative frequency, limit: damping ratio).
+inline constexpr double kNearestFrequencyTolerance = 1e-2;
+inline constexpr double kNearestDampingTolerance = 2e-2;
+
+/// Whether a stable prediction is within the nearest bars of natural frequency omega (rad/s), ratio zeta.
+bool within_nearest(const Prediction& p, double omega, double zeta);
+
 /// Whether a prediction has natural frequency omega (rad/s) and damping ratio zeta within `scale` times the
 /// exact tolerances. Stability is the caller's to add (an engine that clamps may report a met response
 /// whose map is marginal).
