@@ -26,6 +26,7 @@ import { chosenVerdict, copyText, fmt, showModalSummary, showNumbers, showStabil
 import { probeUnit, showJoints, showModalTargets, showProbes, tunedJoints } from './simulate_panel.js';
 import { identifyOverlay, installIdentify, showIdentified } from './identify.js';
 import { modesOfAnswer, showModes, solvedAnswer } from './modes.js';
+import { installTyped } from './typed.js';
 import {
   fromQuery, presetRequest, previewRequest, readForm, stateFromScene, toQuery, tuneRequest, tuningFields,
   writeForm,
@@ -38,6 +39,7 @@ const $ = (id) => document.getElementById(id);
 const player = new PreviewPlayer($('preview-panel'));
 const comparison = new Comparison(document.querySelector('main'), $('preview'), $('preview-a'));
 let lastSeries = null;  // the response series of the answer shown, for pinning it as A
+const typedPanel = installTyped($('typed-panel'), (scene) => callJson('POST', 'api/v1/simulate', { scene }));
 let lanes = [];         // a preset's 1-D oscillators, drawn beside its preview at the same scene time
 const previewTime = () => Number($('preview').dataset.frame ?? 0) * (Number($('preview').dataset.frameSeconds) || 0);
 // The one time cursor: the preview's frame; every plot shows it and a drag on a plot moves it.
@@ -491,6 +493,7 @@ async function runSimulate(state, tune) {
     const doc = await tracked(channels.simulate.run((signal) => callJson('POST', 'api/v1/simulate', simulateRequest(state, tune), signal)));
     if (doc === Latest.stale || !generations.belongs(generation)) return;
     if (box2dPreset(state)) showPresetJoints(state, doc);
+    typedPanel.show(box2dPreset(state) ? presetScene : null, doc);
     const modal = showModalTargets($('modal-targets'), $('modal-note'), doc.modal_tuning);
     $('modal-group').hidden = !modal;
     $('joints-caption').textContent = modal ? "The scene's tuned joints: k and c solved for the mode"

@@ -151,8 +151,10 @@ export function modesOfAnswer(doc) {
 }
 
 /// The tune-shaped answer of joint `id` (or of the first solved joint) in a simulate answer of a modally tuned
-/// scene: its solved k, c, the target asked, the mode measured, and each engine's values; null when none.
+/// scene: its solved k, c, the target asked, the mode measured, and each engine's values (the joint's
+/// `engines`, which the server sends once, beside its `answer`); null when none.
 export function solvedAnswer(doc, id) {
   const joints = (doc?.joints ?? []).filter((j) => j.answer);
-  return (joints.find((j) => j.id === id) ?? joints[0])?.answer ?? null;
+  const j = joints.find((x) => x.id === id) ?? joints[0];
+  return j ? { ...j.answer, engines: j.engines } : null;
 }

@@ -149,7 +149,7 @@ json requested_of_target(const ModalTargetResult& t, int index) {
 }
 
 // The tune-shaped answer of a solved joint: its solved numbers, requested = the target, achieved = measured.
-json solved_answer(const Scene& scene, const SceneResult& run, const JointTuning& t, std::size_t i, const json& engines, const json& warnings) {
+json solved_answer(const Scene& scene, const SceneResult& run, const JointTuning& t, std::size_t i, const json& warnings) {
   const ModalTargetResult* target = first_target(run);
   json a = t.solved->joint_export ? encode_tune_result(TuneRequest{}, *t.solved->joint_export) : json::object();
   a["mode"] = "solved";
@@ -161,7 +161,8 @@ json solved_answer(const Scene& scene, const SceneResult& run, const JointTuning
     const json m = target_measurement(run, *target);
     a["achieved"] = {{"frequency_hz", m["frequency_hz"]}, {"damping_ratio", m["damping_ratio"]}, {"measured", m}};
   }
-  a["engines"] = engines;
+  a.erase("engines");    // the joint's own `engines` beside it (the page joins them): said once
+  a.erase("stability");  // the integrators' verdicts on the per-joint equivalent: nothing the designer asked
   a["warnings"] = warnings;
   a["joint"] = scene.joints[i].id;
   a["solved_by"] = {{"group", t.solved->group}};
@@ -229,7 +230,7 @@ json scene_joint_json(const Scene& scene, const SceneResult& run, std::size_t i)
     j["achieved_frequency_hz"] = j["measured"].is_object() ? j["measured"]["frequency_hz"] : json();
     j["fell_back_to_standard"] = run.modal_tuning->fell_back_to_standard;
     j["warnings"] = solved_warnings(run, engines);
-    j["answer"] = solved_answer(scene, run, t, i, engines, j["warnings"]);
+    j["answer"] = solved_answer(scene, run, t, i, j["warnings"]);
     return j;
   }
   j["requested"] = {{"frequency_hz", number_or_null(t.requested_frequency_hz)}, {"damping_ratio", number_or_null(t.requested_damping_ratio)}};

@@ -86,5 +86,22 @@ TEST(SceneLegend, PerSpringScenesNameEachJointAndGroupTheUnmeasured) {
   EXPECT_TRUE(scene_legend(chain.scene, chain.result).empty());
 }
 
+// A joint as typed asks nothing: its line says the values it ran and what they measured.
+TEST(SceneLegend, ATypedJointNamesItsValues) {
+  LegendRun r;
+  r.doc = load_preset(test_support::kPresets, "vehicle_per_spring");
+  for (nlohmann::json& j : r.doc["joints"]) {
+    for (const char* k : {"response_frames", "oscillation"}) j.erase(k);
+    j["typed"] = {{"b2WheelJointDef::stiffness", 4700.6}, {"b2WheelJointDef::damping", 173.09}};
+  }
+  r.scene = codec::decode_scene(r.doc);
+  r.result = scene::run_scene(r.scene, {});
+  const std::vector<std::string> lines = scene_legend(r.scene, r.result);
+  EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
+    return starts_with(l, "rear_suspension: as typed k 4700.6, c 173.09 \u2192 measured ");
+  })) << (lines.empty() ? std::string("no legend") : lines.front());
+  for (const std::string& line : lines) EXPECT_EQ(line.find("asked"), std::string::npos) << line;
+}
+
 }  // namespace
 }  // namespace softtune::app

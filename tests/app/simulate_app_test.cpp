@@ -183,7 +183,7 @@ TEST(Simulate, TypedRefusesNamesAndValuesNotTheEngines) {
     return "(accepted)";
   };
   EXPECT_EQ(refused({{"b2DistanceJointDef::stiffness", 100.0}, {"b2DistanceJointDef::damping", 1.0}}),
-            "scene.joints.0.typed.b2DistanceJointDef::stiffness");
+            "scene.joints.0.typed.b2DistanceJointDef::damping");  // the first name, in key order
   EXPECT_EQ(refused({{"b2WheelJointDef::stiffness", 100.0}}), "scene.joints.0.typed.b2WheelJointDef::damping");
   EXPECT_EQ(refused({{"b2WheelJointDef::stiffness", -1.0}, {"b2WheelJointDef::damping", 1.0}}),
             "scene.joints.0.typed.b2WheelJointDef::stiffness");

@@ -452,6 +452,18 @@ test('a preset tuned by its modes starts on its own mode, and a pick reaches the
   assert.ok(snippet.includes(`jd.damping = ${group.damping}f;`), snippet);
   assert.doesNotMatch(snippet, /b2DistanceJointDef/);
   assert.equal(await page.locator('#engines tr.engine[data-engine="jolt"] [data-testid="engine-basis"]').getAttribute('data-basis'), 'per_joint_model');
+  // As typed: the panel holds what to type; run as typed (nothing solved), the heave measures what the summary says.
+  await page.locator('#typed-panel summary').click();
+  assert.equal(JSON.parse(await page.locator('#typed-values').inputValue()).rear_suspension['b2WheelJointDef::stiffness'], group.stiffness);
+  await page.locator('#typed-run').click();
+  await page.waitForSelector('#typed-probes tr[data-probe="heave"]', { timeout: 20000 });
+  assert.equal(await page.locator('#typed-probes tr[data-probe="heave"] td').nth(1).textContent(), String(Number(measured.toPrecision(6))));
+  // A pinned A carries A's solved numbers, not a spring's own.
+  await page.locator('#pin').click();
+  await page.waitForSelector('[data-testid="a-k"]', { timeout: 20000 });
+  assert.equal(Number(await page.getByTestId('a-k').getAttribute('data-value')), group.stiffness);
+  assert.match(await page.getByTestId('a-summary').textContent(), new RegExp(`k ${Number(group.stiffness.toPrecision(6))}`));
+  await page.locator('#pin').click();
 
   // Each spring on its own mass: the preview runs the scene without modal tuning, and the URL keeps the pick.
   await page.locator('input[name="target"][value="springs"]').check();
