@@ -233,15 +233,19 @@ export const ENGINE_SYNTAX = {
     fields: {
       'DampedSpringJoint2D.stiffness': { slot: 'stiffness', unit: 'N/m' },
       'DampedSpringJoint2D.damping': { slot: 'damping', unit: 'N s/m' },
+      'PinJoint2D.softness': { slot: 'softness', unit: '1/kg' },
+      'PinJoint2D.bias': { slot: 'bias' },
     },
     code(w, settings, h) {
       const damp = isNumber(settings.linear_damp) ? decimal(settings.linear_damp) : undefined;
+      const pin = w.has('softness') || w.has('bias');
+      const joint = pin ? 'PinJoint2D' : 'DampedSpringJoint2D';
+      const fields = pin ? ['softness', 'bias'] : ['stiffness', 'damping'];
       return [
-        w.line(['stiffness'], (k) => `$DampedSpringJoint2D.stiffness = ${k}`),
-        w.line(['damping'], (c) => `$DampedSpringJoint2D.damping = ${c}`),
+        ...fields.map((f) => w.line([f], (v) => `$${joint}.${f} = ${v}`)),
         ...(damp ? [`$RigidBody2D.linear_damp = ${damp}`, `$RigidBody2D.angular_damp = ${damp}`] : []),
         ...(isNumber(h) ? [`Engine.iterations_per_second = ${Math.round(1 / h)}  # physics steps per second: one step of h`] : []),
-        ...tscnLines('DampedSpringJoint2D', [['stiffness', w.slot('stiffness')], ['damping', w.slot('damping')]]),
+        ...tscnLines(joint, fields.map((f) => [f, w.slot(f)])),
       ];
     },
   },

@@ -61,6 +61,24 @@ test('Godot 3.2 2-D (GDScript): the snippet parses in Godot, with the .tscn line
   assert.doesNotMatch(out, /SCRIPT ERROR|Parse Error/, out);
 });
 
+test('Godot 3.2 2-D PinJoint2D (GDScript): softness and bias parse in Godot', { skip: !godot && 'godot3-server not installed' }, () => {
+  const report = {
+    settings: { linear_damp: 0.1, joint: 'PinJoint2D' },
+    parameters: { 'PinJoint2D.softness': 0.0254, 'PinJoint2D.bias': 0.3 },
+    exact: { 'PinJoint2D.softness': 0.0261, 'PinJoint2D.bias': 0.29 },
+  };
+  const text = snippet('godot_2d', report, 'plain');
+  for (const line of ['$PinJoint2D.softness = 0.0254  # 1/kg', '$PinJoint2D.bias = 0.3', '# softness = 0.0254']) {
+    assert.ok(text.split('\n').includes(line), `${line}\n---\n${text}`);
+  }
+  assert.doesNotMatch(text, /DampedSpringJoint2D\./);
+  const file = join(work, 'godot_pin.gd');
+  writeFileSync(file, ['extends Node', '', 'func _ready():', ...text.split('\n').map((l) => `\t${l}`), ''].join('\n'));
+  const home = join(work, 'home');
+  execFileSync('mkdir', ['-p', home]);
+  execFileSync(godot, ['--check-only', '-s', file], { cwd: work, env: { ...process.env, HOME: home }, encoding: 'utf8', stdio: 'pipe' });
+});
+
 test('Godot 3.2 3-D (GDScript): Generic6DOFJoint\'s X spring parses in Godot, with the .tscn lines as comments', { skip: !godot && 'godot3-server not installed' }, () => {
   const report = {
     settings: { 'physics/3d/physics_engine': 'Bullet', 'physics/3d/default_linear_damp': 0.1, linear_damp: -1 },

@@ -99,16 +99,29 @@ std::vector<CaseRuns> run_in_godot(const std::vector<Case>& cases, const std::ve
   return out;
 }
 
+bool pinned(const Case& c) { return c.run.settings[kGodot2DJoint] != 0.0; }
+
+// A 2-D case line: the spring's stiffness and damping, or the pin's softness and bias, then the damp and
+// the joint (0 spring, 1 pin).
 std::string line_2d(const Case& c, const Parameters& p) {
+  const bool pin = pinned(c);
   char buffer[256];
-  std::snprintf(buffer, sizeof buffer, "2 %d %.17g %.17g %d %.17g %.17g %.17g", c.run.body == RunBody::point ? 0 : 1,
-                c.run.effective_mass, c.run.x0, c.run.steps, *parameter_value(p, "DampedSpringJoint2D.stiffness"),
-                *parameter_value(p, "DampedSpringJoint2D.damping"), c.run.settings[kGodot2DLinearDamp]);
+  std::snprintf(buffer, sizeof buffer, "2 %d %.17g %.17g %d %.17g %.17g %.17g %d", c.run.body == RunBody::point ? 0 : 1,
+                c.run.effective_mass, c.run.x0, c.run.steps,
+                *parameter_value(p, pin ? "PinJoint2D.softness" : "DampedSpringJoint2D.stiffness"),
+                *parameter_value(p, pin ? "PinJoint2D.bias" : "DampedSpringJoint2D.damping"),
+                c.run.settings[kGodot2DLinearDamp], pin ? 1 : 0);
   return buffer;
 }
 
 // The model's trajectory of a run from x = 1 at rest: Step2DSW::step as godot_2d_step_map has it.
 RunTrajectory model_2d(const Case& c, const Parameters& p) {
+  if (pinned(c)) {
+    return conformance::step_map_trajectory(
+        godot_2d_pin_step_map(c.run.effective_mass, *parameter_value(p, "PinJoint2D.softness"),
+                              *parameter_value(p, "PinJoint2D.bias"), c.run.dt, c.run.settings[kGodot2DLinearDamp]),
+        c.run.steps);
+  }
   const Eigen::Matrix2d a = godot_2d_step_map(c.run.effective_mass, *parameter_value(p, "DampedSpringJoint2D.stiffness"),
                                               *parameter_value(p, "DampedSpringJoint2D.damping"), c.run.dt,
                                               c.run.settings[kGodot2DLinearDamp]);
@@ -117,7 +130,8 @@ RunTrajectory model_2d(const Case& c, const Parameters& p) {
 
 TEST(Godot2DConformance, RealEngineMatchesTheModel) {
   const std::vector<conformance::Variant> variants = {
-      {"damp0.1", {0.1}}, {"damp0", {0.0}}, {"damp1", {1.0}}, {"damp5", {5.0}},
+      {"spring damp0.1", {0.1, 0}}, {"spring damp0", {0.0, 0}}, {"pin damp0.1", {0.1, 1}}, {"spring damp1", {1.0, 0}},
+      {"pin damp0", {0.0, 1}},         {"spring damp5", {5.0, 0}}, {"pin damp3", {3.0, 1}},
   };
   std::vector<Case> cases = conformance::build_cases(kGodot2DModel, variants, {1e-2, 1.0, 1e3}, 1e-3);
   hold_overdamped_runs(cases);
@@ -127,7 +141,7 @@ TEST(Godot2DConformance, RealEngineMatchesTheModel) {
     if (cases[i].exact) runs.push_back({i, true, line_2d(cases[i], *cases[i].report.exact)});
   }
   const std::vector<CaseRuns> trajectories = run_in_godot(cases, runs, project("DEFAULT"));
-  conformance::check_cases("Godot 3.2.3 2-D DampedSpringJoint2D", kGodot2DModel.name, cases, trajectories, model_2d);
+  conformance::check_cases("Godot 3.2.3 2-D DampedSpringJoint2D and PinJoint2D", kGodot2DModel.name, cases, trajectories, model_2d);
   EXPECT_GE(cases.size(), 300u);
 }
 

@@ -3,7 +3,8 @@
 # SOFTTUNE_OUT the output. Every case runs at once in the one space of its dimension, each on its own static
 # body (no shapes, so nothing collides); the physics rate is RATE, one physics step per frame.
 #
-# A case line: id dim body m x0 steps stiffness damping linear_damp
+# A case line: id dim body m x0 steps stiffness damping linear_damp [joint]
+#   (dim 2, joint 1: a PinJoint2D, and the two values are its softness and bias)
 #   dim 2: a RigidBody2D on a DampedSpringJoint2D (Physics2DServer, what the node calls) from a static anchor
 #   REST along -x, rest length REST (a rest length of 0 would turn the damper's direction, the anchors'
 #   direction, through 90 degrees whenever the anchors pass each other; a short one keeps float's rounding of
@@ -37,7 +38,38 @@ func _body_2d(space, m, plank, x0):
 	Physics2DServer.body_set_state(body, Physics2DServer.BODY_STATE_CAN_SLEEP, false)
 	return body
 
+# A PinJoint2D case, with nodes (Godot 3.2 binds neither pin_joint_set_param nor PIN_JOINT_SOFTNESS on
+# Physics2DServer; the node sets them): a RigidBody2D at rest with its anchor at the origin, a StaticBody2D,
+# and a PinJoint2D at the origin joining them (Joint2D needs both nodes).
+func _add_pin_2d(c, f):
+	var plank = int(f[2]) == 1
+	var m = float(f[3])
+	c.offset = 0.5 if plank else 0.0
+	var body = RigidBody2D.new()
+	body.mass = 2.0 * m if plank else m
+	body.gravity_scale = 0.0
+	body.linear_damp = float(f[8])
+	body.angular_damp = float(f[8])
+	body.can_sleep = false
+	body.position = Vector2(0, -c.offset)
+	get_root().add_child(body)
+	var ground = StaticBody2D.new()
+	get_root().add_child(ground)
+	var pin = PinJoint2D.new()
+	get_root().add_child(pin)
+	pin.softness = float(f[6])
+	pin.bias = float(f[7])
+	pin.node_a = pin.get_path_to(body)
+	pin.node_b = pin.get_path_to(ground)
+	c.body = body.get_rid()
+	c.node = body
+	c.f = f
+
 func _add_2d(c, f):
+	c.pin = f.size() > 9 and int(f[9]) == 1
+	if c.pin:
+		_add_pin_2d(c, f)
+		return
 	var space = get_root().get_world_2d().space
 	var ground = Physics2DServer.body_create()
 	Physics2DServer.body_set_mode(ground, Physics2DServer.BODY_MODE_STATIC)
@@ -62,9 +94,12 @@ func _join_2d(c):
 	var m = float(f[3])
 	var x0 = float(f[4])
 	var offset = c.offset
-	var ground = c.ground
 	if plank:
 		Physics2DServer.body_set_param(body, Physics2DServer.BODY_PARAM_INERTIA, 2.0 * m * 0.25)
+	if c.pin:
+		Physics2DServer.body_set_state(body, Physics2DServer.BODY_STATE_TRANSFORM, Transform2D(0, Vector2(x0, -offset)))
+		return
+	var ground = c.ground
 	# The joint is built at rest; then the body is moved by x0.
 	Physics2DServer.body_set_state(body, Physics2DServer.BODY_STATE_TRANSFORM, Transform2D(0, Vector2(0, -offset)))
 	var joint = Physics2DServer.damped_spring_joint_create(Vector2(-REST, 0), Vector2(0, 0), ground, body)
@@ -109,6 +144,8 @@ func _stretch(c):
 	if c.dim == 3:
 		return PhysicsServer.body_get_state(c.body, PhysicsServer.BODY_STATE_TRANSFORM).origin.x
 	var t = Physics2DServer.body_get_state(c.body, Physics2DServer.BODY_STATE_TRANSFORM)
+	if c.pin:
+		return t.xform(Vector2(0, c.offset)).x
 	return t.xform(Vector2(0, c.offset)).distance_to(Vector2(-REST, 0)) - REST
 
 func _init():
