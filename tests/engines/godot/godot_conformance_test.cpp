@@ -47,9 +47,10 @@ struct GodotRun {
   std::string line;
 };
 
-// A Godot project folder whose project.godot picks the 3-D backend ("DEFAULT" is Bullet in Godot 3.2).
-std::filesystem::path project(const std::string& physics_engine) {
-  const std::filesystem::path dir = std::filesystem::path(SOFTTUNE_GODOT_WORK) / ("project_" + physics_engine);
+// A Godot project folder whose project.godot picks the 3-D backend ("DEFAULT" is Bullet in Godot 3.2), one
+// per test (`tag`): Godot writes its logs there.
+std::filesystem::path project(const std::string& physics_engine, const std::string& tag) {
+  const std::filesystem::path dir = std::filesystem::path(SOFTTUNE_GODOT_WORK) / ("project_" + tag);
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "project.godot") << "config_version=4\n\n[physics]\n\n3d/physics_engine=\"" << physics_engine
                                        << "\"\n";
@@ -57,9 +58,10 @@ std::filesystem::path project(const std::string& physics_engine) {
 }
 
 // Runs every run in Godot, one process per physics rate, in the project folder `in_project`; returns the
-// trajectories (x over x0) by case.
+// trajectories (x over x0) by case. `tag` names the test's files, so that tests run at once (ctest -j) do
+// not share them.
 std::vector<CaseRuns> run_in_godot(const std::vector<Case>& cases, const std::vector<GodotRun>& runs,
-                                   const std::filesystem::path& in_project) {
+                                   const std::filesystem::path& in_project, const std::string& tag) {
   std::vector<CaseRuns> out(cases.size());
   std::map<int, std::vector<std::size_t>> by_rate;
   for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -68,8 +70,8 @@ std::vector<CaseRuns> run_in_godot(const std::vector<Case>& cases, const std::ve
   const std::filesystem::path work = SOFTTUNE_GODOT_WORK;
   std::filesystem::create_directories(work / "home");
   for (const auto& [rate, indices] : by_rate) {
-    const std::filesystem::path in = work / ("cases_" + std::to_string(rate) + ".txt");
-    const std::filesystem::path result = work / ("out_" + std::to_string(rate) + ".txt");
+    const std::filesystem::path in = work / ("cases_" + tag + "_" + std::to_string(rate) + ".txt");
+    const std::filesystem::path result = work / ("out_" + tag + "_" + std::to_string(rate) + ".txt");
     {
       std::ofstream file(in);
       for (std::size_t i : indices) file << i << ' ' << runs[i].line << '\n';
@@ -79,7 +81,7 @@ std::vector<CaseRuns> run_in_godot(const std::vector<Case>& cases, const std::ve
                                 " SOFTTUNE_CASES='" + in.string() + "' SOFTTUNE_OUT='" + result.string() + "' '" +
                                 SOFTTUNE_GODOT + "' --path '" + in_project.string() + "' --fixed-fps " +
                                 std::to_string(rate) + " -s '" +
-                                SOFTTUNE_GODOT_SCRIPT + "' > '" + (work / "godot.log").string() + "' 2>&1";
+                                SOFTTUNE_GODOT_SCRIPT + "' > '" + (work / ("godot_" + tag + ".log")).string() + "' 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
     std::ifstream file(result);
     std::string line;
@@ -140,7 +142,7 @@ TEST(Godot2DConformance, RealEngineMatchesTheModel) {
     if (cases[i].plain) runs.push_back({i, false, line_2d(cases[i], cases[i].report.parameters)});
     if (cases[i].exact) runs.push_back({i, true, line_2d(cases[i], *cases[i].report.exact)});
   }
-  const std::vector<CaseRuns> trajectories = run_in_godot(cases, runs, project("DEFAULT"));
+  const std::vector<CaseRuns> trajectories = run_in_godot(cases, runs, project("DEFAULT", "2d"), "2d");
   conformance::check_cases("Godot 3.2.3 2-D DampedSpringJoint2D and PinJoint2D", kGodot2DModel.name, cases, trajectories, model_2d);
   EXPECT_GE(cases.size(), 300u);
 }
@@ -184,7 +186,7 @@ TEST(Godot3DConformance, BulletMatchesTheModel) {
     if (cases[i].plain) runs.push_back({i, false, line_3d(cases[i], cases[i].report.parameters)});
     if (cases[i].exact) runs.push_back({i, true, line_3d(cases[i], *cases[i].report.exact)});
   }
-  const std::vector<CaseRuns> trajectories = run_in_godot(cases, runs, project("DEFAULT"));
+  const std::vector<CaseRuns> trajectories = run_in_godot(cases, runs, project("DEFAULT", "3d_bullet"), "3d_bullet");
   conformance::check_cases("Godot 3.2.3 3-D Generic6DOFJoint on Bullet", kGodot3DModel.name, cases, trajectories, model_3d);
   EXPECT_GE(cases.size(), 150u);
 }
@@ -203,7 +205,7 @@ TEST(Godot3DConformance, GodotPhysicsIgnoresTheSpringAsTheModelSays) {
     EXPECT_FALSE(refused[i].report.exact) << refused[i].label;
     if (!typed[i].report.parameters.empty()) runs.push_back({i, false, line_3d(typed[i], typed[i].report.parameters)});
   }
-  const std::vector<CaseRuns> trajectories = run_in_godot(typed, runs, project("GodotPhysics"));
+  const std::vector<CaseRuns> trajectories = run_in_godot(typed, runs, project("GodotPhysics", "3d_godotphysics"), "3d_godotphysics");
   double worst = 0.0;
   int moved = 0;
   for (const GodotRun& r : runs) {
