@@ -3,6 +3,7 @@
 
 #include "box2d_v2_4_run.h"
 #include "bullet_engine.h"
+#include "chipmunk_engine.h"
 #include "mujoco_engine.h"
 #include "ode_engine.h"
 #include "softtune/engines/verify.h"
@@ -15,6 +16,7 @@ std::span<const RealEngine* const> real_engines() {
       &kOdeEngine,
       &kBulletEngine,
       &kMujocoEngine,
+      &kChipmunkEngine,
   };
   return kEngines;
 }

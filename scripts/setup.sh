@@ -24,6 +24,8 @@ packages=(
   libwebp-dev libgif-dev             # render: preview clips (WebPAnimEncoder, giflib)
   libfreetype-dev libfontconfig-dev fonts-dejavu-core  # render: anti-aliased preview text (DejaVu Sans)
   libxml2-dev                        # tests/app: the check's JUnit XML validated against its XSD, parsed back
+  libchipmunk-dev                    # engines/chipmunk, tests/engines/chipmunk: Chipmunk 7.0.3
+  godot3-server                      # tests/engines/godot, tests/web: Godot 3.2.3 headless (2-D and 3-D physics, GDScript)
 )
 
 missing=()

@@ -1,5 +1,6 @@
 // Each engine's answer as a user types it: a snippet in that engine's own syntax (C for Box2D, C++ for Jolt,
-// Bullet and PhysX, MJCF XML for MuJoCo, Rust for Rapier, C for ODE) built from the tune answer's
+// Bullet and PhysX, MJCF XML for MuJoCo, Rust for Rapier, C for ODE and Chipmunk, GDScript and .tscn lines for
+// Godot) built from the tune answer's
 // engines.<name>.parameters or .exact and .settings, and the verdict of its predicted response against the
 // request. Pure functions, no DOM: web/engine_table.js draws them, tests/web/engines.test.mjs checks them.
 //
@@ -18,6 +19,12 @@ export function decimal(v) {
 }
 const cFloat = (v) => `${decimal(v)}f`;
 const slashes = (text) => `// ${text}`;
+const hashes = (text) => `# ${text}`;
+/// The same values as the scene file's property lines of the node, as GDScript comments.
+const tscnLines = (type, properties) => [
+  `# or in the .tscn, under [node name="${type}" type="${type}" ...]:`,
+  ...properties.filter(([, v]) => v !== undefined).map(([name, v]) => `# ${name} = ${v}`),
+];
 const xmlComment = (text) => `<!-- ${String(text).replace(/-{2,}/g, '-')} -->`;
 
 // ---- the engines' syntax ---------------------------------------------------------------------------
@@ -201,6 +208,67 @@ export const ENGINE_SYNTAX = {
         w.line(['stiffness', 'damping'], (k, c) => `joint->setDrive(physx::PxD6Drive::eX, physx::PxD6JointDrive(${k}, ${c}, PX_MAX_F32, ${acceleration}));`),
         'joint->setDrivePosition(physx::PxTransform(physx::PxIdentity));',
         ...(isNumber(h) ? [`scene->simulate(${cFloat(h)});`] : []),
+      ];
+    },
+  },
+  chipmunk: {
+    label: 'Chipmunk 7', language: 'C', comment: slashes, literal: decimal,
+    fields: {
+      cpDampedSpringSetStiffness: { slot: 'stiffness', unit: 'N/m' },
+      cpDampedSpringSetDamping: { slot: 'damping', unit: 'N s/m' },
+    },
+    code(w, settings, h) {
+      return [
+        'cpConstraint *spring = cpSpaceAddConstraint(space, cpDampedSpringNew(staticBody, body, cpvzero, cpvzero, 0.0, 0.0, 0.0));',
+        w.line(['stiffness'], (k) => `cpDampedSpringSetStiffness(spring, ${k});`),
+        w.line(['damping'], (c) => `cpDampedSpringSetDamping(spring, ${c});`),
+        ...(isNumber(settings.cpSpaceSetIterations) ? [`cpSpaceSetIterations(space, ${settings.cpSpaceSetIterations});`] : []),
+        ...(isNumber(settings.cpSpaceSetDamping) ? [`cpSpaceSetDamping(space, ${decimal(settings.cpSpaceSetDamping)});`] : []),
+        ...(isNumber(h) ? [`cpSpaceStep(space, ${decimal(h)});`] : []),
+      ];
+    },
+  },
+  godot_2d: {
+    label: 'Godot 3.2 2-D', language: 'GDScript', comment: hashes, literal: decimal,
+    fields: {
+      'DampedSpringJoint2D.stiffness': { slot: 'stiffness', unit: 'N/m' },
+      'DampedSpringJoint2D.damping': { slot: 'damping', unit: 'N s/m' },
+      'PinJoint2D.softness': { slot: 'softness', unit: '1/kg' },
+      'PinJoint2D.bias': { slot: 'bias' },
+    },
+    code(w, settings, h) {
+      const damp = isNumber(settings.linear_damp) ? decimal(settings.linear_damp) : undefined;
+      const pin = w.has('softness') || w.has('bias');
+      const joint = pin ? 'PinJoint2D' : 'DampedSpringJoint2D';
+      const fields = pin ? ['softness', 'bias'] : ['stiffness', 'damping'];
+      return [
+        ...fields.map((f) => w.line([f], (v) => `$${joint}.${f} = ${v}`)),
+        ...(damp ? [`$RigidBody2D.linear_damp = ${damp}`, `$RigidBody2D.angular_damp = ${damp}`] : []),
+        ...(isNumber(h) ? [`Engine.iterations_per_second = ${Math.round(1 / h)}  # physics steps per second: one step of h`] : []),
+        ...tscnLines(joint, fields.map((f) => [f, w.slot(f)])),
+      ];
+    },
+  },
+  godot_3d: {
+    label: 'Godot 3.2 3-D', language: 'GDScript', comment: hashes, literal: decimal,
+    fields: {
+      'Generic6DOFJoint.linear_spring_x/stiffness': { slot: 'stiffness', unit: 'N/m' },
+      'Generic6DOFJoint.linear_spring_x/damping': { slot: 'damping', unit: 'N s/m' },
+    },
+    code(w, settings, h) {
+      const joint = '$Generic6DOFJoint';
+      const damp = settings.linear_damp;
+      return [
+        ...(settings['physics/3d/physics_engine'] === 'GodotPhysics'
+          ? [hashes('GodotPhysics 3-D ignores joint springs in Godot 3.2: set physics/3d/physics_engine to DEFAULT (Bullet)')] : []),
+        `${joint}.set_flag_x(Generic6DOFJoint.FLAG_ENABLE_LINEAR_LIMIT, false)`,
+        `${joint}.set_flag_x(Generic6DOFJoint.FLAG_ENABLE_LINEAR_SPRING, true)`,
+        w.line(['stiffness'], (k) => `${joint}.set_param_x(Generic6DOFJoint.PARAM_LINEAR_SPRING_STIFFNESS, ${k})`),
+        w.line(['damping'], (c) => `${joint}.set_param_x(Generic6DOFJoint.PARAM_LINEAR_SPRING_DAMPING, ${c})`),
+        ...(isNumber(damp) ? [`$RigidBody.linear_damp = ${decimal(damp)}  # added to the project's default_linear_damp when >= 0`] : []),
+        ...(isNumber(h) ? [`Engine.iterations_per_second = ${Math.round(1 / h)}  # physics steps per second: one step of h`] : []),
+        ...tscnLines('Generic6DOFJoint', [['linear_limit_x/enabled', 'false'], ['linear_spring_x/enabled', 'true'],
+          ['linear_spring_x/stiffness', w.slot('stiffness')], ['linear_spring_x/damping', w.slot('damping')]]),
       ];
     },
   },
