@@ -4,6 +4,7 @@
 // first asked for (a preview nobody clips pays nothing), one frame decoded at a time.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,10 +36,39 @@ std::optional<FieldError> validate_clip(int frames, ImageSize size);
 /// long as the one before it (1/60 s for a single frame). Non-increasing times count as 1 ms apart.
 std::vector<int> frame_durations_ms(const std::vector<double>& times_s);
 
+/// libwebp settings of a WebP clip, chosen by measurement (bench/render_bench.cpp, BM_ClipWebpSettings;
+/// docs/benchmarks.md): lossless keeps the springs and text exact.
+struct WebpClipOptions {
+  bool lossless = true;
+  int method = 0;            ///< 0 (fastest) .. 6
+  float quality = 0.0f;      ///< lossless: effort 0..100; lossy: quality
+  int near_lossless = 100;   ///< 100: off; lower quantizes pixels near edges (lossless only)
+  int kmax = 0;              ///< WebPAnimEncoderOptions::kmax: <= 0 makes only the first frame a key frame
+  int kmin = 0;
+  bool minimize_size = false;
+};
+
+/// A clip encoded frame by frame, in order, while the frames render (the frame pipeline's clip stage):
+/// add() frame 0, 1, ... of the clip's size, then finish() once. Not thread-safe: one caller at a time.
+class ClipEncoder {
+ public:
+  virtual ~ClipEncoder() = default;
+  /// The next frame's RGBA pixels (rgba_bytes(size)).
+  virtual void add(const std::vector<std::uint8_t>& rgba) = 0;
+  /// After the last frame: the file's bytes. Throws std::logic_error when frames are missing.
+  virtual std::string finish() = 0;
+};
+
+/// The encoder of a clip of these frames (their times in the run, one per frame, as for encode_clip).
+/// Throws std::invalid_argument for no frames.
+std::unique_ptr<ClipEncoder> make_clip_encoder(ClipFormat format, ImageSize size, const std::vector<double>& times_s,
+                                               const WebpClipOptions& webp = {});
+
 /// Encodes PNG frames (all of one size) as an animated WebP or GIF that plays once per loop, forever.
 /// WebP: lossless (flat colours and sharp text compress well and stay exact). GIF: a 256-colour
 /// palette (the preview palette's own colours and a 6x6x6 cube), frame delays in centiseconds with
-/// frames closer than GIF's 2 cs floor merged into the next (browsers slow delays under 2 cs to 10 cs).
+/// frames closer than GIF's 2 cs floor merged into the next (browsers slow delays under 2 cs to 10 cs);
+/// each frame after the first only the box of pixels that changed, the unchanged ones in it transparent.
 /// Throws std::invalid_argument for no frames or mismatched sizes, std::runtime_error if a library fails.
 std::string encode_clip(ClipFormat format, const std::vector<std::string>& frames_png, const std::vector<double>& times_s);
 
