@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "clip_palette.h"
 #include "softtune/render/clip.h"
 #include "softtune/render/palette.h"
 #include "softtune/render/view.h"
@@ -20,54 +21,8 @@
 namespace softtune::render {
 namespace {
 
-// Unchanged pixels of a differenced frame: the last index, which no colour maps to.
-constexpr int kTransparent = 255;
-
-// The preview's own colours first (so backgrounds, bodies and text keep their exact colour), then a
-// 6x6x6 cube for blends and fringes.
-std::vector<Rgba> gif_palette() {
-  std::vector<Rgba> p{palette::kBackground, palette::kEarth,          palette::kGroundLine,     palette::kText,
-                      palette::kAnchor,     palette::kSpringNeutral,  palette::kSpringStretched, palette::kSpringCompressed,
-                      palette::kRod,        palette::kMouseLink,      palette::kPinFace};
-  for (Role r : {Role::static_body, Role::dynamic_body, Role::probed, Role::wheel, Role::probed_second}) {
-    p.push_back(role_colours(r).fill);
-    p.push_back(role_colours(r).outline);
-  }
-  for (int r = 0; r < 6; ++r) {
-    for (int g = 0; g < 6; ++g) {
-      for (int b = 0; b < 6; ++b) {
-        p.push_back({static_cast<std::uint8_t>(r * 51), static_cast<std::uint8_t>(g * 51), static_cast<std::uint8_t>(b * 51), 255});
-      }
-    }
-  }
-  p.resize(std::min<std::size_t>(p.size(), kTransparent), palette::kBackground);
-  while (p.size() < 256) p.push_back(palette::kBackground);  // index kTransparent: never a nearest colour
-  return p;
-}
-
-// Nearest palette entry of every 5-bit-per-channel colour, made once.
-struct Quantizer {
-  std::vector<Rgba> colours = gif_palette();
-  std::vector<std::uint8_t> table = std::vector<std::uint8_t>(32 * 32 * 32);
-  Quantizer() {
-    for (int i = 0; i < 32 * 32 * 32; ++i) {
-      const int r = ((i >> 10) & 31) * 255 / 31, g = ((i >> 5) & 31) * 255 / 31, b = (i & 31) * 255 / 31;
-      int best = 0, best_d = 1 << 30;
-      for (int k = 0; k < kTransparent; ++k) {
-        const int dr = r - colours[k].r, dg = g - colours[k].g, db = b - colours[k].b;
-        const int d = 3 * dr * dr + 4 * dg * dg + 2 * db * db;
-        if (d < best_d) best_d = d, best = k;
-      }
-      table[i] = static_cast<std::uint8_t>(best);
-    }
-  }
-  std::uint8_t index(const std::uint8_t* px) const { return table[((px[0] >> 3) << 10) | ((px[1] >> 3) << 5) | (px[2] >> 3)]; }
-};
-
-const Quantizer& quantizer() {
-  static const Quantizer q;
-  return q;
-}
+// Unchanged pixels of a differenced frame: the last index, which no colour maps to (clip_palette.h).
+constexpr int kTransparent = kClipTransparentIndex;
 
 int write_to_string(GifFileType* gif, const GifByteType* bytes, int n) {
   static_cast<std::string*>(gif->UserData)->append(reinterpret_cast<const char*>(bytes), n);
@@ -94,7 +49,7 @@ class GifEncoder final : public ClipEncoder {
     int error = 0;
     gif_ = EGifOpen(&out_, write_to_string, &error);
     if (!gif_) throw std::runtime_error(std::string("gif: ") + GifErrorString(error));
-    const Quantizer& q = quantizer();
+    const ClipQuantizer& q = clip_quantizer();
     ColorMapObject* map = GifMakeMapObject(256, nullptr);
     if (!map) throw std::runtime_error("gif: out of memory");
     for (int k = 0; k < 256; ++k) map->Colors[k] = {q.colours[k].r, q.colours[k].g, q.colours[k].b};
@@ -120,7 +75,7 @@ class GifEncoder final : public ClipEncoder {
     if (next_kept_ >= kept_.size() || kept_[next_kept_] != i) return;  // merged into the frame before it
     const std::size_t k = next_kept_++;
     const int w = size_.width, h = size_.height;
-    const Quantizer& q = quantizer();
+    const ClipQuantizer& q = clip_quantizer();
     std::vector<std::uint8_t>& now = indices_[k % 2];
     const std::vector<std::uint8_t>& before = indices_[(k + 1) % 2];
     now.resize(static_cast<std::size_t>(w) * h);

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "softtune/render/palette.h"
 #include "softtune/render/png.h"
 
 namespace softtune::render {
@@ -110,11 +111,52 @@ TEST(Clip, WebpDecodesToTheFramesWithTheirTiming) {
   EXPECT_EQ(got.loop, 0);
   ASSERT_EQ(got.end_ms.size(), 12u);
   for (int i = 0; i < 12; ++i) EXPECT_EQ(got.end_ms[i], 100 * (i + 1)) << i;
-  // Lossless: every pixel comes back as it went in.
-  for (int i : {0, 5, 11}) {
+  // Lossless on the GIF's palette: every pixel comes back as its nearest palette colour, within a few
+  // levels of what went in (the square's 20 grey is the anchor colour 20, 22, 28; the 246 grey the
+  // background 246, 246, 242).
+  for (int i = 0; i < 12; ++i) {
     ImageSize s;
-    EXPECT_EQ(got.rgba[i], decode_png(frames[i], s)) << "frame " << i;
+    const std::vector<std::uint8_t> source = decode_png(frames[i], s);
+    for (std::size_t p = 0; p < source.size(); p += 4) {
+      ASSERT_LE(std::abs(got.rgba[i][p] - source[p]) + std::abs(got.rgba[i][p + 1] - source[p + 1]) +
+                    std::abs(got.rgba[i][p + 2] - source[p + 2]),
+                16)
+          << "frame " << i << " pixel " << p / 4;
+      ASSERT_EQ(got.rgba[i][p + 3], 255);
+    }
   }
+}
+
+TEST(Clip, WebpKeepsThePalettesOwnColoursExactAndExactModeEveryColour) {
+  // A frame in the preview palette's own colours (background, a dynamic body, a stretched spring) comes
+  // back exactly; without the palette (WebpClipOptions::palette false) any colour does.
+  const ImageSize size{64, 32};
+  std::vector<std::vector<std::uint8_t>> frames;
+  for (int k = 0; k < 4; ++k) {
+    std::vector<std::uint8_t> rgba(rgba_bytes(size));
+    for (int p = 0; p < size.width * size.height; ++p) {
+      const int x = p % size.width;
+      const Rgba c = x < 8 * k ? role_colours(Role::dynamic_body).fill : x < 8 * k + 4 ? palette::kSpringStretched : palette::kBackground;
+      rgba[4 * p] = c.r, rgba[4 * p + 1] = c.g, rgba[4 * p + 2] = c.b, rgba[4 * p + 3] = 255;
+    }
+    frames.push_back(rgba);
+  }
+  const auto encode = [&](const WebpClipOptions& o) {
+    auto e = make_clip_encoder(ClipFormat::webp, size, {0.0, 0.1, 0.2, 0.3}, o);
+    for (const auto& f : frames) e->add(f);
+    return decode_webp(e->finish());
+  };
+  const WebpFrames on_palette = encode({});
+  ASSERT_EQ(on_palette.rgba.size(), 4u);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(on_palette.rgba[k], frames[k]) << "frame " << k;
+  // Off the palette: a grey ramp no palette holds, exact without it.
+  for (auto& f : frames) {
+    for (std::size_t p = 0; p < f.size(); p += 4) f[p] = f[p + 1] = f[p + 2] = static_cast<std::uint8_t>((p / 4) % 251);
+  }
+  WebpClipOptions exact;
+  exact.palette = false;
+  const WebpFrames got = encode(exact);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(got.rgba[k], frames[k]) << "frame " << k;
 }
 
 TEST(Clip, GifDecodesToTheFramesWithCentisecondDelays) {

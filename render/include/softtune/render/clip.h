@@ -37,15 +37,25 @@ std::optional<FieldError> validate_clip(int frames, ImageSize size);
 std::vector<int> frame_durations_ms(const std::vector<double>& times_s);
 
 /// libwebp settings of a WebP clip, chosen by measurement (bench/render_bench.cpp, BM_ClipWebpSettings;
-/// docs/benchmarks.md): lossless keeps the springs and text exact.
+/// docs/benchmarks.md): on 120 frames of the vehicle, lossless method 1 at effort 0 on the GIF's palette
+/// with our own differencing made 363 kB in 2.7 ms of CPU a frame, against 1408 kB and 18.9 ms for the
+/// previous setting (exact colours, WebPAnimEncoder, method 1, effort 20) and 950 kB for the GIF; exact
+/// colours with differencing stayed at 1264 kB (anti-aliased fringes are many colours), lossy quality 75
+/// at 1207 kB blurred the text.
 struct WebpClipOptions {
   bool lossless = true;
-  int method = 0;            ///< 0 (fastest) .. 6
+  int method = 1;            ///< 0 (fastest) .. 6
   float quality = 0.0f;      ///< lossless: effort 0..100; lossy: quality
   int near_lossless = 100;   ///< 100: off; lower quantizes pixels near edges (lossless only)
   int kmax = 0;              ///< WebPAnimEncoderOptions::kmax: <= 0 makes only the first frame a key frame
   int kmin = 0;
   bool minimize_size = false;
+  /// Our own frame differencing (the changed box alone, unchanged pixels transparent, blended onto the
+  /// last frame) over WebPMux, instead of WebPAnimEncoder's sub-frames.
+  bool differencing = true;
+  /// Map each pixel to the GIF's 256-colour palette first (exact on the preview palette's own colours,
+  /// fringes to the nearest of a 6x6x6 cube), so VP8L codes palette indices (with differencing only).
+  bool palette = true;
 };
 
 /// A clip encoded frame by frame, in order, while the frames render (the frame pipeline's clip stage):
