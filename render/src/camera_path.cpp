@@ -36,17 +36,18 @@ Bounds intersect(const Bounds& a, const Bounds& b) {
 // Everything but static shapes, the ground and ghosts.
 Bounds moving_bounds(const DrawFrame& f) {
   DrawFrame moving;
-  std::copy_if(f.springs.begin(), f.springs.end(), std::back_inserter(moving.springs), [](const SpringShape& s) { return !s.ghost; });
-  std::copy_if(f.pins.begin(), f.pins.end(), std::back_inserter(moving.pins), [](const PinShape& p) { return !p.ghost; });
-  std::copy_if(f.anchors.begin(), f.anchors.end(), std::back_inserter(moving.anchors), [](const AnchorDot& a) { return !a.ghost; });
+  const bool all = f.ghost_in_camera;
+  std::copy_if(f.springs.begin(), f.springs.end(), std::back_inserter(moving.springs), [all](const SpringShape& s) { return all || !s.ghost; });
+  std::copy_if(f.pins.begin(), f.pins.end(), std::back_inserter(moving.pins), [all](const PinShape& p) { return all || !p.ghost; });
+  std::copy_if(f.anchors.begin(), f.anchors.end(), std::back_inserter(moving.anchors), [all](const AnchorDot& a) { return all || !a.ghost; });
   moving.targets = f.targets;
   moving.trails = f.trails;
   Bounds b = bounds_of(moving);
   for (const PolygonShape& p : f.polygons) {
-    if (p.role != Role::static_body && p.role != Role::ghost) b.add(box_of(p.vertices_m));
+    if (p.role != Role::static_body && (all || p.role != Role::ghost)) b.add(box_of(p.vertices_m));
   }
   for (const CircleShape& c : f.circles) {
-    if (c.role != Role::static_body && c.role != Role::ghost) b.add(circle_box(c));
+    if (c.role != Role::static_body && (all || c.role != Role::ghost)) b.add(circle_box(c));
   }
   return b;
 }

@@ -75,6 +75,7 @@ double oscillator_analytic_lane_y(const OscillatorScene& s) { return shelf_top(s
 DrawFrame oscillator_frame(const OscillatorScene& s, const OscillatorSample& sample, int index, int frames) {
   DrawFrame f;
   f.ground_y_m = 0.0;
+  f.ghost_in_camera = true;  // the exact lane is half of what this preview shows
   const double reach = s.rest_length_m + 1.5 * std::abs(s.initial_displacement_m) + kOscillatorBlockSize;
   const double y_sim = oscillator_simulated_lane_y(s), y_exact = oscillator_analytic_lane_y(s);
   const double top = shelf_top(s) + kOscillatorBlockSize + 0.3;

@@ -11,6 +11,7 @@
 #include "png_decode.h"
 #include "softtune/analytic.h"
 #include "softtune/designer.h"
+#include "softtune/render/camera_path.h"
 #include "softtune/render/palette.h"
 
 namespace softtune::render {
@@ -162,6 +163,26 @@ TEST(OscillatorFrames, RenderedBlocksSitAtTheirProjectedPositions) {
     auto over = [](double top, int alpha, double below) { return (top * alpha + below * (255 - alpha)) / 255.0; };
     const double on_bg = over(ghost.g, ghost.a, bg.g), on_grid = over(ghost.g, ghost.a, over(grid.g, grid.a, bg.g));
     EXPECT_LT(std::min(std::abs(g[1] - on_bg), std::abs(g[1] - on_grid)), 2.0) << "frame " << k << ": " << int(g[1]);
+  }
+}
+
+TEST(OscillatorFrames, TheExactLaneStaysInViewBelowTheBand) {
+  // Its analytic block is drawn as a ghost, but it is half of this preview: the camera frames it (an A/B
+  // ghost of a scene it never does, camera_path.h), so both blocks stay whole below the title band.
+  const OscillatorScene s = scene(2.0, 0.5, 60.0, 1, Method::soft);
+  const FrameSet set = oscillator_frames(s, 30);
+  for (const ImageSize size : {ImageSize{640, 360}, ImageSize{360, 640}}) {
+    const Bounds view = visible_below_band(run_camera(set, size), size);
+    for (const DrawFrame& f : set.frames) {
+      for (const PolygonShape& p : f.polygons) {
+        for (const Vec2 v : p.vertices_m) {
+          EXPECT_GE(v.y, view.lo.y - 1e-9);
+          EXPECT_LE(v.y, view.hi.y + 1e-9) << "a block above the band at " << size.width << "x" << size.height;
+          EXPECT_GE(v.x, view.lo.x - 1e-9);
+          EXPECT_LE(v.x, view.hi.x + 1e-9);
+        }
+      }
+    }
   }
 }
 

@@ -159,7 +159,10 @@ struct DrawFrame {
   std::string caption;               ///< title band, top-left: what and when (name, time, frame); UTF-8
   std::string settings;              ///< title band, top-right: mode, fps, substeps (the grid step is added)
   std::vector<std::string> legend;   ///< title band, under the caption: asked against measured, per joint
-  std::optional<Inset> inset;        ///< the probe over time, lower right
+  std::optional<Inset> inset;        ///< the probe over time, in a corner
+  /// The ghost is part of the picture, not a second run: the oscillator's exact analytic lane on its
+  /// shelf. Then the camera frames it too (action_bounds); an A/B ghost never does.
+  bool ghost_in_camera = false;
 };
 
 /// Where the camera looks. Fixed (from a preset) or fitted to the bounds of every frame of a run.
