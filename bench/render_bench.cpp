@@ -3,6 +3,11 @@
 // with two workers; a cached repeat under 20 ms. Run with LP_NUM_THREADS=0/1/2 to compare llvmpipe
 // thread settings (docs/benchmarks.md, "Preview frames"). Issue 22: a 120-frame 640x360 clip (WebP,
 // GIF) against the 120 PNGs of the same run (BM_Clip), and the pipeline still within 1.2x of the floor.
+// Issue 34: clips as fast as frames. BM_ClipWebpSettings encodes the 120 rendered frames of a preset with
+// each candidate libwebp setting (the choice in clip.h's WebpClipOptions); BM_ClipStage renders a
+// preset's 120 frames through the pipeline without a clip, with the WebP clip stage and with the GIF one,
+// alternately in one run, and reports each clip's wall and CPU time against the frames alone and the
+// WebP's size against the GIF's (aim: within 1.5x, no larger than the GIF).
 #include <benchmark/benchmark.h>
 
 #include <sys/resource.h>
@@ -11,6 +16,8 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <optional>
 #include <sstream>
 #include <ctime>
 #include <string>
@@ -21,6 +28,7 @@
 #include "softtune/render/oscillator_frames.h"
 #include "softtune/render/png.h"
 #include "softtune/render/renderer.h"
+#include "app/preview_service.h"
 
 namespace {
 
@@ -214,6 +222,118 @@ void BM_ContextCreation(benchmark::State& state) {
   }
 }
 
+// 120 frames of a preset at 640x360, as the service draws them (plan_preview's make_frames), camera fixed
+// per frame (run_cameras), so a bench can render them outside the pipeline.
+struct PresetFrames {
+  FrameSet set;
+  std::vector<Camera> cameras;
+};
+const PresetFrames& preset_frames(int which) {
+  static const char* kNames[] = {"vehicle", "bridge", "chain"};
+  static std::map<int, PresetFrames> made;
+  auto it = made.find(which);
+  if (it != made.end()) return it->second;
+  PresetFrames f;
+  f.set = softtune::app::plan_preview({{"preset", kNames[which]}, {"frames", kFrames}}, SOFTTUNE_PRESETS_DIR).make_frames();
+  f.cameras = run_cameras(f.set.camera, f.set.follow, f.set.frames, kSize);
+  return made.emplace(which, std::move(f)).first->second;
+}
+
+const std::vector<std::vector<std::uint8_t>>& preset_pixels(int which) {
+  static std::map<int, std::vector<std::vector<std::uint8_t>>> made;
+  auto it = made.find(which);
+  if (it != made.end()) return it->second;
+  const PresetFrames& f = preset_frames(which);
+  std::vector<std::vector<std::uint8_t>> v;
+  auto r = make_osmesa_renderer();
+  for (std::size_t i = 0; i < f.set.frames.size(); ++i) {
+    v.push_back(pixels());
+    r->render(f.set.frames[i], f.cameras[i], kSize, v.back());
+  }
+  return made.emplace(which, std::move(v)).first->second;
+}
+
+// One libwebp setting on a preset's 120 rendered frames (pixels in hand, no PNG decoding), against the
+// GIF encoder on the same pixels: args preset (0 vehicle, 1 bridge, 2 chain), method, lossless, quality,
+// near_lossless, kmax, diff (0: WebPAnimEncoder's sub-frames, 1: our own differencing over WebPMux,
+// 2: that on frames mapped to the GIF's palette).
+void BM_ClipWebpSettings(benchmark::State& state) {
+  const auto& v = preset_pixels(static_cast<int>(state.range(0)));
+  WebpClipOptions o;
+  o.method = static_cast<int>(state.range(1));
+  o.lossless = state.range(2) != 0;
+  o.quality = static_cast<float>(state.range(3));
+  o.near_lossless = static_cast<int>(state.range(4));
+  o.kmax = static_cast<int>(state.range(5));
+  o.kmin = o.kmax > 1 ? o.kmax / 2 : 0;
+  o.differencing = state.range(6) != 0;
+  o.palette = state.range(6) == 2;
+  const std::vector<double>& times = preset_frames(static_cast<int>(state.range(0))).set.times_s;
+  const auto encode = [&](ClipFormat format) {
+    auto e = make_clip_encoder(format, kSize, times, o);
+    for (const auto& px : v) e->add(px);
+    return e->finish().size();
+  };
+  std::size_t bytes = 0;
+  const auto t0 = Clock::now();
+  const double c0 = cpu_ms();
+  for (auto _ : state) bytes = encode(ClipFormat::webp);
+  const double ms = ms_per_item(t0, state), cpu = (cpu_ms() - c0) / static_cast<double>(state.iterations());
+  const auto g0 = Clock::now();
+  const double gc0 = cpu_ms();
+  const std::size_t gif_bytes = encode(ClipFormat::gif);
+  const double gif_cpu = cpu_ms() - gc0;
+  state.counters["ms_per_frame"] = ms / kFrames;
+  state.counters["cpu_ms_per_frame"] = cpu / kFrames;
+  state.counters["clip_kB"] = bytes / 1024.0;
+  state.counters["gif_kB"] = gif_bytes / 1024.0;
+  state.counters["gif_cpu_ms_per_frame"] = gif_cpu / kFrames;
+  state.counters["gif_ms_per_frame"] = std::chrono::duration<double, std::milli>(Clock::now() - g0).count() / kFrames;
+}
+
+// A preset's 120 frames through the pipeline (2 workers, warm): frames alone, with the WebP clip stage,
+// with the GIF clip stage, each iteration all three, so the ratios share the machine's load.
+void BM_ClipStage(benchmark::State& state) {
+  const PresetFrames& f = preset_frames(static_cast<int>(state.range(0)));
+  PipelineOptions o;
+  o.workers = 2;
+  FramePipeline p(o);
+  PreviewSettings s{kFrames, kSize, 0};
+  p.submit("warm-up", s, [&] { return f.set; })->wait();
+  double ms[3] = {0, 0, 0}, cpu[3] = {0, 0, 0}, render_ms[3] = {0, 0, 0}, clip_ms[3] = {0, 0, 0};
+  std::size_t bytes[3] = {0, 0, 0};
+  int n = 0;
+  for (auto _ : state) {
+    for (int k = 0; k < 3; ++k) {
+      const std::optional<ClipFormat> clip = k == 0 ? std::nullopt : std::optional(k == 1 ? ClipFormat::webp : ClipFormat::gif);
+      const auto t0 = Clock::now();
+      const double c0 = cpu_ms();
+      const auto preview = p.submit("stage " + std::to_string(n++), s, [&] { return f.set; }, clip)->wait();
+      cpu[k] += cpu_ms() - c0;
+      ms[k] += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+      bytes[k] = preview->clip.size();
+      render_ms[k] += preview->timings.render_ms;
+      clip_ms[k] += preview->timings.clip_ms;
+    }
+  }
+  const double it = static_cast<double>(state.iterations());
+  state.counters["frames_ms"] = ms[0] / it;
+  state.counters["webp_ms"] = ms[1] / it;
+  state.counters["gif_ms"] = ms[2] / it;
+  state.counters["webp_x_frames"] = ms[1] / ms[0];
+  state.counters["gif_x_frames"] = ms[2] / ms[0];
+  state.counters["webp_cpu_x_frames"] = cpu[1] / cpu[0];
+  state.counters["gif_cpu_x_frames"] = cpu[2] / cpu[0];
+  state.counters["webp_kB"] = bytes[1] / 1024.0;
+  state.counters["gif_kB"] = bytes[2] / 1024.0;
+  // Summed over frames and workers (PreviewTimings): where the time goes.
+  state.counters["frames_render_ms"] = render_ms[0] / it;
+  state.counters["webp_render_ms"] = render_ms[1] / it;
+  state.counters["webp_encode_ms"] = clip_ms[1] / it;
+  state.counters["gif_encode_ms"] = clip_ms[2] / it;
+  state.counters["webp_x_gif_size"] = bytes[2] > 0 ? static_cast<double>(bytes[1]) / bytes[2] : 0.0;
+}
+
 BENCHMARK(BM_RasterOnly)->Iterations(600)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RasterOnly_Msaa4)->Iterations(240)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PngOnly)
@@ -229,6 +349,26 @@ BENCHMARK(BM_PngOnly)
     ->Iterations(240)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Clip)->ArgName("webp0_gif1")->Arg(0)->Arg(1)->Iterations(3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ClipWebpSettings)
+    ->ArgNames({"preset", "method", "lossless", "quality", "near_lossless", "kmax", "diff"})
+    ->Args({0, 1, 1, 20, 100, 9, 0})  // the previous default (kmax 9 is libwebp's default for lossless)
+    ->Args({0, 0, 1, 0, 100, 0, 1})
+    ->Args({0, 1, 1, 0, 100, 0, 1})
+    ->Args({0, 0, 0, 75, 100, 0, 1})
+    ->Args({0, 0, 1, 0, 100, 0, 2})
+    ->Args({0, 1, 1, 0, 100, 0, 2})
+    ->Args({0, 1, 1, 25, 100, 0, 2})
+    ->Args({1, 1, 1, 20, 100, 9, 0})
+    ->Args({1, 0, 1, 0, 100, 0, 2})
+    ->Args({1, 1, 1, 0, 100, 0, 2})
+    ->Args({1, 1, 1, 25, 100, 0, 2})
+    ->Args({2, 1, 1, 20, 100, 9, 0})
+    ->Args({2, 0, 1, 0, 100, 0, 2})
+    ->Args({2, 1, 1, 0, 100, 0, 2})
+    ->Args({2, 1, 1, 25, 100, 0, 2})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ClipStage)->ArgName("preset")->Arg(0)->Arg(1)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Pipeline120)->ArgName("workers")->Arg(1)->Arg(2)->Iterations(8)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Pipeline120_NewPool)->Iterations(4)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CachedRepeat)->Iterations(2000)->UseRealTime()->Unit(benchmark::kMicrosecond);

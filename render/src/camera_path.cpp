@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+
+#include "softtune/render/tessellate.h"
 
 namespace softtune::render {
 namespace {
@@ -30,20 +33,21 @@ Bounds intersect(const Bounds& a, const Bounds& b) {
   return out;
 }
 
-// Everything but static shapes and the ground.
+// Everything but static shapes, the ground and ghosts.
 Bounds moving_bounds(const DrawFrame& f) {
   DrawFrame moving;
-  moving.springs = f.springs;
-  moving.pins = f.pins;
+  const bool all = f.ghost_in_camera;
+  std::copy_if(f.springs.begin(), f.springs.end(), std::back_inserter(moving.springs), [all](const SpringShape& s) { return all || !s.ghost; });
+  std::copy_if(f.pins.begin(), f.pins.end(), std::back_inserter(moving.pins), [all](const PinShape& p) { return all || !p.ghost; });
+  std::copy_if(f.anchors.begin(), f.anchors.end(), std::back_inserter(moving.anchors), [all](const AnchorDot& a) { return all || !a.ghost; });
   moving.targets = f.targets;
   moving.trails = f.trails;
-  moving.anchors = f.anchors;
   Bounds b = bounds_of(moving);
   for (const PolygonShape& p : f.polygons) {
-    if (p.role != Role::static_body) b.add(box_of(p.vertices_m));
+    if (p.role != Role::static_body && (all || p.role != Role::ghost)) b.add(box_of(p.vertices_m));
   }
   for (const CircleShape& c : f.circles) {
-    if (c.role != Role::static_body) b.add(circle_box(c));
+    if (c.role != Role::static_body && (all || c.role != Role::ghost)) b.add(circle_box(c));
   }
   return b;
 }
@@ -77,11 +81,11 @@ Bounds action_bounds(const std::vector<DrawFrame>& frames) {
   return out;
 }
 
-Bounds visible_below_band(const Camera& c, ImageSize size) {
+Bounds visible_below_band(const Camera& c, ImageSize size, double band) {
   const View v = make_view(c, size);
   Bounds b;
   b.add(Vec2{v.world_x(0.0), v.world_y(size.height)});
-  b.add(Vec2{v.world_x(size.width), v.world_y(kCaptionBand * size.height)});
+  b.add(Vec2{v.world_x(size.width), v.world_y(band * size.height)});
   return b;
 }
 
@@ -91,7 +95,8 @@ std::vector<Camera> run_cameras(const Camera& fixed, const Follow& follow, const
   if (!fixed.auto_fit) return std::vector<Camera>(n, fixed);
   const double aspect = static_cast<double>(size.width) / size.height;
   const Bounds action = action_bounds(frames);
-  if (follow.bounds_m.size() != n || n == 0) return std::vector<Camera>(n, fit_camera(action, aspect));
+  const double band = n == 0 ? kCaptionBand : caption_band(size, static_cast<int>(frames.front().legend.size()));
+  if (follow.bounds_m.size() != n || n == 0) return std::vector<Camera>(n, fit_camera(action, aspect, 0.06, 0.5, band));
 
   constexpr double kMargin = 0.06;  // of the view width, on every side of the followed box
   // Wide enough for the followed box in every frame, below the band and inside the margins.
@@ -99,9 +104,9 @@ std::vector<Camera> run_cameras(const Camera& fixed, const Follow& follow, const
   for (const Bounds& b : follow.bounds_m) {
     if (b.empty()) continue;
     width = std::max({width, (b.hi.x - b.lo.x) / (1.0 - 2.0 * kMargin),
-                      (b.hi.y - b.lo.y) * aspect / (1.0 - kCaptionBand - 2.0 * kMargin)});
+                      (b.hi.y - b.lo.y) * aspect / (1.0 - band - 2.0 * kMargin)});
   }
-  const double view_h = width / aspect, scene_h = view_h * (1.0 - kCaptionBand);
+  const double view_h = width / aspect, scene_h = view_h * (1.0 - band);
   // Centre x of each frame's box, smoothed by a centred moving average so the camera glides.
   std::vector<double> cx(n), cy(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -130,7 +135,7 @@ std::vector<Camera> run_cameras(const Camera& fixed, const Follow& follow, const
     c.auto_fit = false;
     c.width_m = width;
     // y_mid is the middle of the part under the band; the view's centre sits half a band higher.
-    c.centre_m = {x, y_mid + 0.5 * kCaptionBand * view_h};
+    c.centre_m = {x, y_mid + 0.5 * band * view_h};
   }
   return out;
 }

@@ -2,17 +2,16 @@
 
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 
 #include "softtune/render/png.h"
 
 namespace softtune::render {
 
-// Each format's encoder (clip_webp.cpp, clip_gif.cpp): frames decoded one at a time by `frame(i)`.
-std::string encode_webp_clip(int count, ImageSize size, const std::vector<int>& durations_ms,
-                             const std::function<std::vector<std::uint8_t>(int)>& frame);
-std::string encode_gif_clip(int count, ImageSize size, const std::vector<int>& durations_ms,
-                            const std::function<std::vector<std::uint8_t>(int)>& frame);
+// Each format's encoder (clip_webp.cpp, clip_gif.cpp), given every frame's display time up front.
+std::unique_ptr<ClipEncoder> make_webp_encoder(ImageSize size, std::vector<int> durations_ms, const WebpClipOptions& options);
+std::unique_ptr<ClipEncoder> make_gif_encoder(ImageSize size, std::vector<int> durations_ms);
 
 std::optional<ClipFormat> clip_format(std::string_view name) {
   if (name == "webp") return ClipFormat::webp;
@@ -48,21 +47,27 @@ std::vector<int> frame_durations_ms(const std::vector<double>& t) {
   return out;
 }
 
+std::unique_ptr<ClipEncoder> make_clip_encoder(ClipFormat format, ImageSize size, const std::vector<double>& times_s,
+                                               const WebpClipOptions& webp) {
+  if (times_s.empty()) throw std::invalid_argument("clip: no frames");
+  std::vector<int> durations = frame_durations_ms(times_s);
+  return format == ClipFormat::webp ? make_webp_encoder(size, std::move(durations), webp)
+                                    : make_gif_encoder(size, std::move(durations));
+}
+
 std::string encode_clip(ClipFormat format, const std::vector<std::string>& frames_png, const std::vector<double>& times_s) {
   if (frames_png.empty()) throw std::invalid_argument("clip: no frames");
   if (times_s.size() != frames_png.size()) throw std::invalid_argument("clip: one time per frame");
   ImageSize size;
   decode_png(frames_png.front(), size);
-  const auto frame = [&](int i) {
+  const std::unique_ptr<ClipEncoder> encoder = make_clip_encoder(format, size, times_s);
+  for (const std::string& png : frames_png) {
     ImageSize s;
-    std::vector<std::uint8_t> rgba = decode_png(frames_png[i], s);
+    const std::vector<std::uint8_t> rgba = decode_png(png, s);
     if (!(s == size)) throw std::invalid_argument("clip: frames differ in size");
-    return rgba;
-  };
-  const int count = static_cast<int>(frames_png.size());
-  const std::vector<int> durations = frame_durations_ms(times_s);
-  return format == ClipFormat::webp ? encode_webp_clip(count, size, durations, frame)
-                                    : encode_gif_clip(count, size, durations, frame);
+    encoder->add(rgba);
+  }
+  return encoder->finish();
 }
 
 }  // namespace softtune::render

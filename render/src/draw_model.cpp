@@ -36,8 +36,10 @@ Bounds bounds_of(const DrawFrame& f) {
   for (const PinShape& p : f.pins) b.add(p.at_m);
   for (const TargetShape& t : f.targets) b.add(t.at_m);
   for (const Trail& t : f.trails) {
+    if (t.divergent) continue;  // a blow-up's steps run out of the view on purpose
     for (Vec2 v : t.points_m) b.add(v);
   }
+  for (const AnchorPair& p : f.anchor_pairs) b.add(p.a_m), b.add(p.b_m);
   // The ground has no horizontal extent; its height still belongs in the picture.
   if (f.ground_y_m && !b.empty()) b.add(Vec2{b.lo.x, *f.ground_y_m});
   return b;

@@ -4,6 +4,8 @@
 #include <stdexcept>
 
 #include "softtune/render/content_hash.h"
+#include "softtune/render/png.h"
+#include "softtune/render/tessellate.h"
 
 namespace softtune::render {
 
@@ -30,6 +32,16 @@ struct JobState {
   std::vector<std::string> pngs;  // each worker writes only its own frames' entries
   // ready[i] is set (release) once pngs[i] is written, so frame_png() can serve it before the job ends.
   std::unique_ptr<std::atomic<bool>[]> ready;
+
+  // The clip stage (submit's `clip`): the encoder, the next frame it takes, and frames rendered before
+  // their turn (pixels, or empty: decode pngs[i]). clip_mutex is held while encoding; clip_queue_mutex
+  // guards clip_next and clip_pixels.
+  std::optional<ClipFormat> clip_format;
+  std::unique_ptr<ClipEncoder> clip;
+  std::mutex clip_mutex, clip_queue_mutex;
+  int clip_next = 0;
+  std::vector<std::vector<std::uint8_t>> clip_pixels;
+  std::atomic<std::int64_t> clip_ns{0};
 
   std::atomic<int> done{0};
   std::atomic<bool> failed{false};
@@ -79,7 +91,7 @@ Camera run_camera(const FrameSet& set, ImageSize size) {
 
 // What the cache really holds: string capacities, not sizes.
 std::size_t Preview::bytes() const {
-  std::size_t n = sizeof(Preview) + id.capacity() + filmstrip_png.capacity() + frames_png.capacity() * sizeof(std::string) +
+  std::size_t n = sizeof(Preview) + id.capacity() + filmstrip_png.capacity() + clip.capacity() + frames_png.capacity() * sizeof(std::string) +
                   frame_times_s.capacity() * sizeof(double);
   for (const std::string& f : frames_png) n += f.capacity();
   return n;
@@ -183,8 +195,12 @@ std::shared_ptr<PreviewJob> FramePipeline::find(const std::string& id) {
 }
 
 std::shared_ptr<PreviewJob> FramePipeline::submit(std::string_view canonical_request, const PreviewSettings& settings,
-                                                  const std::function<FrameSet()>& make_frames) {
+                                                  const std::function<FrameSet()>& make_frames,
+                                                  std::optional<ClipFormat> clip) {
   if (auto e = validate_preview_settings(settings)) throw std::invalid_argument(e->field + " " + e->rule);
+  if (clip) {
+    if (auto e = validate_clip(settings.frames, settings.size)) throw std::invalid_argument(e->field + " " + e->rule);
+  }
   const std::string id = preview_id(canonical_request, settings);
   std::shared_ptr<JobState> job;
   {
@@ -214,9 +230,26 @@ std::shared_ptr<PreviewJob> FramePipeline::submit(std::string_view canonical_req
     throw;
   }
   job->cameras = run_cameras(job->frames.camera, job->frames.follow, job->frames.frames, settings.size);
+  if (!job->frames.frames.empty() && job->frames.frames.front().inset) {
+    // One corner for the whole run, where the action is not.
+    const Corner corner = quietest_corner(job->frames.frames, job->cameras, settings.size);
+    for (DrawFrame& f : job->frames.frames) {
+      if (f.inset) f.inset->corner = corner;
+    }
+  }
   job->filmstrip.emplace(filmstrip_layout(settings.frames, settings.filmstrip_every, settings.size));
   job->pngs.resize(settings.frames);
   job->ready = std::make_unique<std::atomic<bool>[]>(settings.frames);
+  if (clip) {
+    job->clip_format = clip;
+    std::vector<double> times = job->frames.times_s;
+    if (times.size() != static_cast<std::size_t>(settings.frames)) {
+      times.resize(settings.frames);
+      for (int i = 0; i < settings.frames; ++i) times[i] = i / 60.0;
+    }
+    job->clip = make_clip_encoder(*clip, settings.size, times, options_.webp);
+    job->clip_pixels.resize(settings.frames);
+  }
   {
     // Newest job first: a designer's latest change is the preview they wait for, while the frames of the one
     // it replaced still render after it (cached, for undo). With a FIFO a drag's new first frame waited for
@@ -268,10 +301,15 @@ void FramePipeline::run_task(const Task& task, std::unique_ptr<Renderer>& render
       job.filmstrip->place(task.index, pixels, size);
       const auto t1 = Clock::now();
       job.pngs[task.index] = encode_png(pixels, size, options_.png);
+      if (job.clip) {
+        std::lock_guard lock(job.clip_queue_mutex);
+        if (task.index - job.clip_next < kClipPendingFrames) job.clip_pixels[task.index] = pixels;
+      }
       job.ready[task.index].store(true, std::memory_order_release);
       const auto t2 = Clock::now();
       job.render_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count());
       job.png_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(t2 - t1).count());
+      if (job.clip) feed_clip(job, false);
     } catch (const std::exception& e) {
       std::lock_guard lock(job.mutex);
       if (job.error.empty()) job.error = "frame " + std::to_string(task.index) + ": " + e.what();
@@ -282,7 +320,69 @@ void FramePipeline::run_task(const Task& task, std::unique_ptr<Renderer>& render
   if (job.done.fetch_add(1, std::memory_order_acq_rel) + 1 == job.settings.frames) finish(job);
 }
 
+// Hands the encoder every frame whose turn has come, in order. Without `wait` it returns at once when
+// another worker holds the encoder; that worker looks again after it lets go, so no frame is left behind
+// (a frame is marked ready before its worker comes here). A failure fails the job.
+void FramePipeline::feed_clip(JobState& job, bool wait) {
+  for (;;) {
+    std::unique_lock encoding(job.clip_mutex, std::defer_lock);
+    if (wait) {
+      encoding.lock();
+    } else if (!encoding.try_lock()) {
+      return;
+    }
+    for (;;) {
+      int i = 0;
+      std::vector<std::uint8_t> pixels;
+      {
+        std::lock_guard lock(job.clip_queue_mutex);
+        i = job.clip_next;
+        if (i >= job.settings.frames || !job.ready[i].load(std::memory_order_acquire)) break;
+        pixels = std::move(job.clip_pixels[i]);
+        std::vector<std::uint8_t>().swap(job.clip_pixels[i]);
+      }
+      const auto t0 = Clock::now();
+      try {
+        if (!job.failed.load(std::memory_order_acquire)) {
+          if (pixels.empty()) {
+            ImageSize decoded;
+            pixels = decode_png(job.pngs[i], decoded);
+          }
+          job.clip->add(pixels);
+        }
+      } catch (const std::exception& e) {
+        std::lock_guard lock(job.mutex);
+        if (job.error.empty()) job.error = "clip, frame " + std::to_string(i) + ": " + e.what();
+        job.failed.store(true, std::memory_order_release);
+      }
+      job.clip_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count());
+      std::lock_guard lock(job.clip_queue_mutex);
+      job.clip_next = i + 1;
+    }
+    encoding.unlock();
+    if (wait) return;
+    std::lock_guard lock(job.clip_queue_mutex);
+    const int next = job.clip_next;
+    if (next >= job.settings.frames || !job.ready[next].load(std::memory_order_acquire)) return;
+  }
+}
+
 void FramePipeline::finish(JobState& job) {
+  double clip_tail_ms = 0.0;
+  std::string clip_bytes;
+  if (job.clip) {
+    const auto t0 = Clock::now();
+    feed_clip(job, true);
+    try {
+      if (!job.failed.load(std::memory_order_acquire)) clip_bytes = job.clip->finish();
+    } catch (const std::exception& e) {
+      std::lock_guard lock(job.mutex);
+      if (job.error.empty()) job.error = std::string("clip: ") + e.what();
+      job.failed.store(true, std::memory_order_release);
+    }
+    job.clip.reset();
+    clip_tail_ms = ms_since(t0);
+  }
   std::shared_ptr<Preview> preview;
   std::string error;
   if (job.failed.load(std::memory_order_acquire)) {
@@ -300,6 +400,11 @@ void FramePipeline::finish(JobState& job) {
         job.building = preview;  // frame_png() reads the frames here until complete()
       }
       preview->frame_times_s = job.frames.times_s;
+      preview->run_end_s = job.frames.run_end_s;
+      if (job.clip_format) {
+        preview->clip_format = job.clip_format;
+        preview->clip = std::move(clip_bytes);
+      }
       if (preview->frame_times_s.size() != preview->frames_png.size()) {
         preview->frame_times_s.resize(preview->frames_png.size());
         for (std::size_t i = 0; i < preview->frame_times_s.size(); ++i) preview->frame_times_s[i] = i / 60.0;
@@ -313,6 +418,8 @@ void FramePipeline::finish(JobState& job) {
       t.prepare_ms = job.prepare_ms;
       t.render_ms = job.render_ns.load() * 1e-6;
       t.png_ms = job.png_ns.load() * 1e-6;
+      t.clip_ms = job.clip_ns.load() * 1e-6;
+      t.clip_tail_ms = clip_tail_ms;
       t.workers = workers();
       t.wall_ms = ms_since(job.started);
       cache_.put(job.id, preview, preview->bytes());

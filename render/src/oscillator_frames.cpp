@@ -1,10 +1,12 @@
 #include "softtune/render/oscillator_frames.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "softtune/analytic.h"
 #include "softtune/designer.h"
+#include "softtune/render/frame_schedule.h"
 
 namespace softtune::render {
 namespace {
@@ -62,6 +64,10 @@ std::vector<OscillatorSample> simulate_oscillator(const OscillatorScene& s, int 
   return out;
 }
 
+int oscillator_run_frames(const OscillatorScene& s) {
+  return std::max(0, static_cast<int>(std::lround(s.duration_s * s.fps)));
+}
+
 double oscillator_block_x(const OscillatorScene& s, double displacement_m) { return s.rest_length_m + displacement_m; }
 double oscillator_simulated_lane_y(const OscillatorScene&) { return kHalf; }
 double oscillator_analytic_lane_y(const OscillatorScene& s) { return shelf_top(s) + kHalf; }
@@ -69,6 +75,7 @@ double oscillator_analytic_lane_y(const OscillatorScene& s) { return shelf_top(s
 DrawFrame oscillator_frame(const OscillatorScene& s, const OscillatorSample& sample, int index, int frames) {
   DrawFrame f;
   f.ground_y_m = 0.0;
+  f.ghost_in_camera = true;  // the exact lane is half of what this preview shows
   const double reach = s.rest_length_m + 1.5 * std::abs(s.initial_displacement_m) + kOscillatorBlockSize;
   const double y_sim = oscillator_simulated_lane_y(s), y_exact = oscillator_analytic_lane_y(s);
   const double top = shelf_top(s) + kOscillatorBlockSize + 0.3;
@@ -88,7 +95,8 @@ DrawFrame oscillator_frame(const OscillatorScene& s, const OscillatorSample& sam
 
   const double f_hz = s.omega / (2.0 * 3.141592653589793);
   char line[200];
-  std::snprintf(line, sizeof line, "oscillator  \u00b7  t = %.3f s  \u00b7  frame %d/%d", sample.t_s, index, frames);
+  std::snprintf(line, sizeof line, "oscillator  \u00b7  t = %.3f s  \u00b7  frame %d/%d", sample.t_s, index,
+                std::max(0, frames - 1));
   f.caption = line;
   std::snprintf(line, sizeof line, "%s \u00b7 %g fps \u00d7 %d substep%s", s.method == Method::soft_exact ? "exact" : "standard",
                 s.fps, s.substeps, s.substeps == 1 ? "" : "s");
@@ -102,11 +110,13 @@ DrawFrame oscillator_frame(const OscillatorScene& s, const OscillatorSample& sam
 
 FrameSet oscillator_frames(const OscillatorScene& s, int frames) {
   FrameSet set;
-  const std::vector<OscillatorSample> samples = simulate_oscillator(s, frames);
-  set.frames.reserve(samples.size());
-  for (int k = 0; k < frames; ++k) {
-    set.frames.push_back(oscillator_frame(s, samples[k], k, frames));
-    set.times_s.push_back(samples[k].t_s);
+  const std::vector<int> at = spread_frames(oscillator_run_frames(s), frames);
+  set.run_end_s = oscillator_run_frames(s) / s.fps;
+  const std::vector<OscillatorSample> samples = simulate_oscillator(s, at.empty() ? 0 : at.back() + 1);
+  set.frames.reserve(at.size());
+  for (int k = 0; k < static_cast<int>(at.size()); ++k) {
+    set.frames.push_back(oscillator_frame(s, samples[at[k]], k, frames));
+    set.times_s.push_back(samples[at[k]].t_s);
   }
   return set;
 }

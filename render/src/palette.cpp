@@ -7,10 +7,15 @@ namespace softtune::render {
 
 RoleColours role_colours(Role role) {
   switch (role) {
-    case Role::static_body: return {{150, 156, 166, 255}, {62, 68, 80, 255}};
-    case Role::dynamic_body: return {{88, 142, 240, 255}, {24, 66, 160, 255}};
+    // Chosen so that every body class, spring state and trail is at least 15 apart in CIEDE2000 over the
+    // background (tests/render/palette_test.cpp): compressed springs no longer blue on blue bodies,
+    // wheels apart from crates, a second probed body apart from the first, trails apart from both.
+    case Role::static_body: return {{140, 140, 140, 255}, {62, 68, 80, 255}};
+    case Role::dynamic_body: return {{120, 165, 245, 255}, {24, 66, 160, 255}};
     case Role::probed: return {{250, 168, 40, 255}, {160, 92, 0, 255}};
     case Role::ghost: return {{200, 40, 130, 60}, {200, 40, 130, 230}};
+    case Role::wheel: return {{110, 200, 220, 255}, {20, 100, 120, 255}};
+    case Role::probed_second: return {{255, 222, 80, 255}, {170, 130, 0, 255}};
   }
   return {{0, 0, 0, 255}, {0, 0, 0, 255}};
 }

@@ -242,14 +242,137 @@ void draw_target(Builder& b, const View& v, const StrokeSizes& s, const TargetSh
   b.stroke({{c.x, c.y - r}, {c.x, c.y + r}}, false, w, palette::kMouseLink);
 }
 
-// Segments that fade in from transparent at the oldest point to kTrail at the newest.
+// Segments that fade in from transparent at the oldest point to kTrail at the newest; a divergence trail
+// in kDivergence, wider, with a dot at each step so the growing jumps read as steps.
 void draw_trail(Builder& b, const View& v, const StrokeSizes& s, const Trail& t) {
   const std::size_t n = t.points_m.size();
+  const Rgba colour = t.divergent ? palette::kDivergence : palette::kTrail;
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const double alpha = static_cast<double>(i + 1) / (n - 1);
-    b.stroke({to_px(v, t.points_m[i]), to_px(v, t.points_m[i + 1])}, false, 0.75 * s.spring_px,
-             with_alpha(palette::kTrail, alpha));
+    b.stroke({to_px(v, t.points_m[i]), to_px(v, t.points_m[i + 1])}, false, (t.divergent ? 1.0 : 0.75) * s.spring_px,
+             with_alpha(colour, alpha));
+    if (t.divergent) b.disc(to_px(v, t.points_m[i + 1]), 0.8 * s.anchor_radius_px, with_alpha(colour, alpha));
   }
+}
+
+// The debug layers (draw_model.h). Sizes in pixels, so the marks read at any zoom: Box2D's testbed
+// draws contact normals 0.3 m long (testbed/test.cpp, Test::Step, k_axisScale) and points 10 px wide.
+void draw_debug_marks(Builder& b, const View& v, const StrokeSizes& s, const DrawFrame& f) {
+  const double r = s.anchor_radius_px, w = 0.6 * s.outline_px;
+  for (const RestMark& m : f.rest_marks) {
+    const P at = to_px(v, m.at_m), n = perp(unit(P{m.along.x, -m.along.y})) * (2.2 * r);
+    b.stroke({at + n, at - n}, false, w + 1.5, palette::kHalo);
+    b.stroke({at + n, at - n}, false, w, palette::kRestMark);
+  }
+  for (const AxisMark& a : f.axes) {
+    const P p0 = to_px(v, a.from_m), p1 = to_px(v, a.to_m), rest = to_px(v, a.rest_m), now = to_px(v, a.now_m);
+    // The axis dashed, its rest point ticked, the travel from rest to now drawn thick.
+    const P d = p1 - p0;
+    const double len = norm(d), dash = 4.0 * w + 2.0;
+    for (double t = 0.0; t < len; t += 2.0 * dash) {
+      b.stroke({p0 + unit(d) * t, p0 + unit(d) * std::min(len, t + dash)}, false, w, palette::kRestMark);
+    }
+    const P n = perp(unit(d)) * (1.6 * r);
+    b.stroke({rest + n, rest - n}, false, w, palette::kRestMark);
+    b.stroke({rest, now}, false, 2.0 * w, palette::kRestMark);
+  }
+  for (const AnchorPair& p : f.anchor_pairs) {
+    const P a = to_px(v, p.a_m), pb = to_px(v, p.b_m);
+    const P gap_end = a + (pb - a) * p.magnify;
+    if (norm(gap_end - a) > 0.5) {
+      b.stroke({a, gap_end}, false, w + 1.5, palette::kHalo);
+      b.stroke({a, gap_end}, false, w, palette::kAnchorGap);
+    }
+    b.stroke(Builder::circle_points(a, 1.5 * r), true, w, palette::kAnchor);
+    b.disc(pb, 0.6 * r, palette::kAnchorGap);
+  }
+  for (const MassCentre& m : f.mass_centres) {
+    // The usual centre-of-mass sign: a disc quartered dark and light.
+    const P c = to_px(v, m.at_m);
+    const double rc = 1.1 * r;
+    b.disc(c, rc + 1.0, palette::kHalo);
+    for (int q = 0; q < 4; ++q) {
+      std::vector<P> wedge{c};
+      for (int k = 0; k <= 6; ++k) {
+        const double ang = (q + k / 6.0) * 0.5 * std::numbers::pi;
+        wedge.push_back({c.x + rc * std::cos(ang), c.y + rc * std::sin(ang)});
+      }
+      b.fill_convex(wedge, q % 2 == 0 ? palette::kContact : palette::kPinFace);
+    }
+  }
+  for (const ContactMark& c : f.contacts) {
+    const P at = to_px(v, c.at_m), tip = at + unit(P{c.normal.x, -c.normal.y}) * (4.0 * r);
+    b.stroke({at, tip}, false, w + 1.5, palette::kHalo);
+    b.stroke({at, tip}, false, w, palette::kContact);
+    b.disc(at, 0.9 * r, palette::kHalo);
+    b.disc(at, 0.6 * r, palette::kContact);
+  }
+}
+
+// A ghost body wholly out of the view below the band (the camera frames the real run only): an arrow
+// in the ghost's colour at the view's edge, pointing at it; one arrow where several would overlap.
+void draw_ghost_arrows(Builder& b, const View& v, const StrokeSizes& s, const DrawFrame& f, double band_px) {
+  const double w = v.size.width, h = v.size.height, r = 3.0 * s.anchor_radius_px;
+  std::vector<P> drawn;
+  const auto mark = [&](const std::vector<P>& pts) {
+    if (pts.empty()) return;
+    P lo = pts.front(), hi = pts.front();
+    for (const P& p : pts) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    if (hi.x >= 0.0 && lo.x <= w && hi.y >= band_px && lo.y <= h) return;  // at least partly in view
+    const P c = (lo + hi) * 0.5;
+    const P at{std::clamp(c.x, 1.5 * r, w - 1.5 * r), std::clamp(c.y, band_px + 1.5 * r, h - 1.5 * r)};
+    const P dir = unit(c - at);
+    if (!(norm(dir) > 0.0) || !std::isfinite(at.x) || !std::isfinite(at.y)) return;
+    for (const P& d : drawn) {
+      if (norm(d - at) < 2.0 * r) return;
+    }
+    drawn.push_back(at);
+    const P tip = at + dir * r, base = at - dir * (0.6 * r), side = perp(dir) * (0.75 * r);
+    const RoleColours ghost = role_colours(Role::ghost);
+    b.fill_convex({tip, base + side, base - side}, ghost.outline);
+  };
+  for (const PolygonShape& p : f.polygons) {
+    if (p.role == Role::ghost) mark(polygon_px(v, p));
+  }
+  for (const CircleShape& c : f.circles) {
+    if (c.role != Role::ghost) continue;
+    const P o = to_px(v, c.centre_m);
+    const double rp = c.radius_m * v.pixels_per_m;
+    mark({{o.x - rp, o.y - rp}, {o.x + rp, o.y + rp}});
+  }
+}
+
+// The probe inset: a panel, the probe's samples, its fit and the asked response as polylines (each
+// broken where it has no value), and a vertical cursor at the frame's time.
+void draw_inset(Builder& b, const StrokeSizes& s, const Inset& in, ImageSize size, int legend_lines) {
+  if (in.t_s.size() < 2 || in.value.size() != in.t_s.size()) return;
+  const InsetBox box = inset_box(size, in.corner, caption_band(size, legend_lines));
+  b.rect(box.x, box.y, box.x + box.w, box.y + box.h, palette::kInsetPanel);
+  b.stroke({{box.x, box.y}, {box.x + box.w, box.y}, {box.x + box.w, box.y + box.h}, {box.x, box.y + box.h}}, true,
+           0.5 * s.outline_px, palette::kBandRule);
+  const auto [lo, hi] = inset_range(in);
+  const double t0 = in.t_s.front(), t1 = in.t_s.back();
+  const auto curve = [&](const std::vector<double>& v, Rgba colour, double width) {
+    if (v.size() != in.t_s.size()) return;
+    std::vector<P> run;
+    const auto flush = [&] {
+      if (run.size() >= 2) b.stroke(run, false, width, colour);
+      run.clear();
+    };
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (!std::isfinite(v[i])) {
+        flush();
+        continue;
+      }
+      run.push_back({inset_x(box, in.t_s[i], t0, t1), inset_y(box, v[i], lo, hi)});
+    }
+    flush();
+  };
+  curve(in.asked, palette::kInsetAsked, 0.75 * s.spring_px);
+  curve(in.value, palette::kInsetProbe, 0.6 * s.spring_px);
+  curve(in.fitted, palette::kInsetFit, 0.6 * s.spring_px);
+  const double cx = inset_x(box, std::clamp(in.cursor_s, t0, t1), t0, t1);
+  b.stroke({{cx, box.plot_y}, {cx, box.plot_y + box.plot_h}}, false, 0.5 * s.spring_px, palette::kInsetCursor);
 }
 
 std::string grid_label(double step) {
@@ -259,8 +382,8 @@ std::string grid_label(double step) {
 }
 
 // The title band's panel: a lighter strip with a rule under it, so the band reads as the frame's header.
-void draw_band(Builder& b, const View& v) {
-  const double h = std::round(kCaptionBand * v.size.height);
+void draw_band(Builder& b, const View& v, double band) {
+  const double h = std::round(band * v.size.height);
   b.rect(0.0, 0.0, v.size.width, h, palette::kBand);
   b.rect(0.0, h - 1.0, v.size.width, h, palette::kBandRule);
 }
@@ -277,6 +400,17 @@ StrokeSizes stroke_sizes(ImageSize size) {
       .text_px = std::max(8, static_cast<int>(std::lround(size.height * 0.036))),
       .grid_min_spacing_px = 36.0 * s,
   };
+}
+
+int min_legend_px(ImageSize size) {
+  return std::max(7, static_cast<int>(std::lround(kMinLegendPxAt360 * size.height / 360.0)));
+}
+
+double caption_band(ImageSize size, int legend_lines) {
+  // layout_text_overlay's rows: its margin on either side, one line per row, the last clear of the rule.
+  const int margin = std::max(2, stroke_sizes(size).text_px / 2);
+  const int need = 2 * margin + (1 + std::max(0, legend_lines)) * line_height_px(min_legend_px(size)) + 1;
+  return std::clamp(static_cast<double>(need) / size.height, kCaptionBand, kMaxCaptionBand);
 }
 
 double grid_step_m(double pixels_per_m, double min_spacing_px) {
@@ -298,7 +432,8 @@ void tessellate(const DrawFrame& f, const View& v, bool fringe_aa, Mesh& out) {
   const double step = grid_step_m(v.pixels_per_m, s.grid_min_spacing_px);
   draw_grid(b, v, step);
   if (f.ground_y_m) draw_ground(b, v, s, *f.ground_y_m);
-  draw_band(b, v);
+  const double band = caption_band(v.size, static_cast<int>(f.legend.size()));
+  draw_band(b, v, band);
   for (const Trail& t : f.trails) draw_trail(b, v, s, t);
   for (const PolygonShape& p : f.polygons) {
     const RoleColours rc = role_colours(p.role);
@@ -314,11 +449,98 @@ void tessellate(const DrawFrame& f, const View& v, bool fringe_aa, Mesh& out) {
     b.disc(to_px(v, a.at_m), s.anchor_radius_px,
            a.ghost ? with_alpha(palette::kAnchor, palette::kGhostAlpha / 255.0) : palette::kAnchor);
   }
+  draw_debug_marks(b, v, s, f);
+  draw_ghost_arrows(b, v, s, f, std::round(band * v.size.height));
+  if (f.inset) draw_inset(b, s, *f.inset, v.size, static_cast<int>(f.legend.size()));
+}
+
+InsetBox inset_box(ImageSize size, Corner corner, double band) {
+  InsetBox box;
+  const double margin = std::max(2.0, 0.015 * size.height);
+  box.w = std::round(kInsetWidth * size.width);
+  box.h = std::round(kInsetHeight * size.height);
+  const bool right = corner == Corner::bottom_right || corner == Corner::top_right;
+  const bool bottom = corner == Corner::bottom_right || corner == Corner::bottom_left;
+  box.x = right ? size.width - margin - box.w : margin;
+  box.y = bottom ? size.height - margin - box.h : std::round(band * size.height) + margin;
+  box.title_px = std::max(7, min_legend_px(size) - 2);
+  const double title_h = 2.0 * line_height_px(box.title_px) + 2.0;  // two lines: the probe, then the curves
+  const double pad = std::max(2.0, 0.02 * box.h);
+  box.plot_x = box.x + pad;
+  box.plot_w = box.w - 2.0 * pad;
+  box.plot_y = box.y + title_h + pad;
+  box.plot_h = std::max(4.0, box.h - title_h - 2.0 * pad);
+  return box;
+}
+
+Corner quietest_corner(const std::vector<DrawFrame>& frames, const std::vector<Camera>& cameras, ImageSize size) {
+  if (frames.empty() || cameras.size() != frames.size()) return Corner::bottom_right;
+  const double band = caption_band(size, static_cast<int>(frames.front().legend.size()));
+  const Corner corners[] = {Corner::bottom_right, Corner::bottom_left, Corner::top_right, Corner::top_left};
+  double covered[4] = {0, 0, 0, 0};
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const View v = make_view(cameras[i], size);
+    const DrawFrame& f = frames[i];
+    std::vector<Bounds> boxes;  // px
+    const auto px_box = [&v](const std::vector<Vec2>& pts) {
+      Bounds b;
+      for (Vec2 p : pts) b.add(Vec2{v.px(p.x), v.py(p.y)});
+      return b;
+    };
+    for (const PolygonShape& p : f.polygons) {
+      if (p.role != Role::static_body && p.role != Role::ghost) boxes.push_back(px_box(p.vertices_m));
+    }
+    for (const CircleShape& c : f.circles) {
+      if (c.role == Role::static_body || c.role == Role::ghost) continue;
+      boxes.push_back(px_box({{c.centre_m.x - c.radius_m, c.centre_m.y - c.radius_m}, {c.centre_m.x + c.radius_m, c.centre_m.y + c.radius_m}}));
+    }
+    for (const SpringShape& sp : f.springs) {
+      if (!sp.ghost) boxes.push_back(px_box({sp.a_m, sp.b_m}));
+    }
+    for (const AnchorDot& a : f.anchors) {
+      if (!a.ghost) boxes.push_back(px_box({a.at_m, a.at_m}));
+    }
+    for (int k = 0; k < 4; ++k) {
+      const InsetBox in = inset_box(size, corners[k], band);
+      for (const Bounds& b : boxes) {
+        // A point or a line still covers a few pixels.
+        const double w = std::max(0.0, std::min(b.hi.x + 2.0, in.x + in.w) - std::max(b.lo.x - 2.0, in.x));
+        const double h = std::max(0.0, std::min(b.hi.y + 2.0, in.y + in.h) - std::max(b.lo.y - 2.0, in.y));
+        covered[k] += w * h;
+      }
+    }
+  }
+  int best = 0;
+  for (int k = 1; k < 4; ++k) {
+    if (covered[k] < covered[best]) best = k;
+  }
+  return corners[best];
+}
+
+double inset_y(const InsetBox& box, double value, double lo, double hi) {
+  return box.plot_y + box.plot_h * (hi - value) / (hi - lo);
+}
+
+double inset_x(const InsetBox& box, double t, double t0, double t1) {
+  return box.plot_x + box.plot_w * (t1 > t0 ? (t - t0) / (t1 - t0) : 0.0);
+}
+
+std::pair<double, double> inset_range(const Inset& in) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (const std::vector<double>* v : {&in.value, &in.fitted, &in.asked}) {
+    for (double x : *v) {
+      if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
+    }
+  }
+  if (!(lo <= hi)) return {-1.0, 1.0};
+  const double pad = hi > lo ? 0.05 * (hi - lo) : std::max(1e-9, 0.05 * std::abs(hi) + 1e-9);
+  return {lo - pad, hi + pad};
 }
 
 std::vector<PlacedText> layout_text_overlay(const DrawFrame& f, const View& v) {
   const StrokeSizes s = stroke_sizes(v.size);
-  const int width = v.size.width, band = static_cast<int>(std::lround(kCaptionBand * v.size.height));
+  const int width = v.size.width;
+  const int band = static_cast<int>(std::lround(caption_band(v.size, static_cast<int>(f.legend.size())) * v.size.height));
   const int margin = std::max(2, s.text_px / 2);
   std::string settings = f.settings;
   settings += (settings.empty() ? "" : "  \u00b7  ") + grid_label(grid_step_m(v.pixels_per_m, s.grid_min_spacing_px));
@@ -362,6 +584,13 @@ std::vector<PlacedText> layout_text_overlay(const DrawFrame& f, const View& v) {
     // Too small for everything: keep what fits at the smallest size, whole lines only.
     layout(7, 2, out);
     std::erase_if(out, [&](const PlacedText& t) { return t.box.right > width || t.box.bottom > band || t.box.left < 0; });
+  }
+  if (f.inset && f.inset->t_s.size() >= 2) {
+    const InsetBox box = inset_box(v.size, f.inset->corner, caption_band(v.size, static_cast<int>(f.legend.size())));
+    const int x = static_cast<int>(box.x) + 3, y = static_cast<int>(box.y) + 1;
+    int px = box.title_px;
+    while (px > 7 && measure_text(f.inset->title, x, y, px).right > box.x + box.w - 3) --px;
+    out.push_back({f.inset->title, x, y, px, measure_text(f.inset->title, x, y, px), false});
   }
   for (const Label& l : f.labels) {
     int x = static_cast<int>(std::lround(v.px(l.at_m.x)));

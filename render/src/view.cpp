@@ -4,7 +4,7 @@
 
 namespace softtune::render {
 
-Camera fit_camera(const Bounds& bounds, double aspect, double margin, double min_width_m) {
+Camera fit_camera(const Bounds& bounds, double aspect, double margin, double min_width_m, double band) {
   Camera c;
   c.auto_fit = false;
   if (bounds.empty()) {
@@ -16,8 +16,8 @@ Camera fit_camera(const Bounds& bounds, double aspect, double margin, double min
   // The view is width_m x width_m / aspect: wide enough for the box, and tall enough for it below
   // the caption band; the box is centred in the part under the band.
   const double pad = 2.0 * margin * std::max(w, h);
-  c.width_m = std::max({w + pad, (h + pad) / (1.0 - kCaptionBand) * aspect, min_width_m});
-  c.centre_m.y += 0.5 * kCaptionBand * c.width_m / aspect;
+  c.width_m = std::max({w + pad, (h + pad) / (1.0 - band) * aspect, min_width_m});
+  c.centre_m.y += 0.5 * band * c.width_m / aspect;
   return c;
 }
 

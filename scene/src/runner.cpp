@@ -79,6 +79,7 @@ Snapshot snapshot(const Scene& scene, Box2DScene& world, int frame) {
     for (const ProbeSettings& p : scene.probes) b.probed = b.probed || p.body == b.id;
     b.center = {body->GetPosition().x, body->GetPosition().y};
     b.angle = body->GetAngle();
+    b.mass_centre = {body->GetWorldCenter().x, body->GetWorldCenter().y};
     const b2Shape* shape = body->GetFixtureList()->GetShape();
     if (shape->GetType() == b2Shape::e_circle) {
       const auto* c = static_cast<const b2CircleShape*>(shape);
@@ -105,6 +106,14 @@ Snapshot snapshot(const Scene& scene, Box2DScene& world, int frame) {
     if (j->GetType() == e_distanceJoint) s.rest_length = static_cast<b2DistanceJoint*>(j)->GetLength();
     s.current_length = (s.anchor_b - s.anchor_a).norm();
     out.joints.push_back(std::move(s));
+  }
+  for (b2Contact* c = world.world().GetContactList(); c; c = c->GetNext()) {
+    if (!c->IsTouching() || !c->IsEnabled()) continue;
+    b2WorldManifold m;
+    c->GetWorldManifold(&m);
+    for (int k = 0; k < c->GetManifold()->pointCount; ++k) {
+      out.contacts.push_back({{m.points[k].x, m.points[k].y}, {m.normal.x, m.normal.y}});
+    }
   }
   return out;
 }
@@ -191,6 +200,7 @@ void step_world(const Scene& scene, const RunOptions& options, Box2DScene& world
   std::vector<bool> left(scene.bodies.size(), false);
   const Eigen::Vector4d& bounds = scene.world.bounds;
   const int stride = std::max(1, options.frame_stride);
+  std::size_t next_record = 0;  // into options.record_at
   for (int f = 0; f <= r.frames; ++f) {
     if (f > 0) world.step_frame(f - 1);
     for (const b2Body* b : world.bodies()) r.finite = r.finite && body_finite(b);
@@ -206,7 +216,14 @@ void step_world(const Scene& scene, const RunOptions& options, Box2DScene& world
         r.left_world.push_back(scene.bodies[b].id);
       }
     }
-    if (options.record_frames && f % stride == 0) r.snapshots.push_back(snapshot(scene, world, f));
+    if (!options.record_frames) continue;
+    if (options.record_at.empty()) {
+      if (f % stride == 0) r.snapshots.push_back(snapshot(scene, world, f));
+      continue;
+    }
+    for (; next_record < options.record_at.size() && options.record_at[next_record] <= f; ++next_record) {
+      if (options.record_at[next_record] == f) r.snapshots.push_back(snapshot(scene, world, f));
+    }
   }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Preview frames for a request: {"preset": NAME} or {"scene": {...}} (a Box2D scene, drawn from its
 // snapshots), or tune fields (the 1-D oscillator with its analytic ghost), plus "frames", "size",
-// "filmstrip_every", "mass_model" and "wait". One long-lived frame pipeline serves every request; its
+// "filmstrip_every", "mass_model", "animation" ("webp" or "gif": a clip encoded while the frames render)
+// and "wait". One long-lived frame pipeline serves every request; its
 // workers start their raster processes (softtune-raster, which hold the GL contexts) only when the first
 // frame is asked for, and end them when idle (render::PipelineOptions::release_renderer_after_ms).
 
@@ -25,7 +26,9 @@ struct PreviewPlan {
   render::PreviewSettings settings;
   std::function<render::FrameSet()> make_frames;
   bool wait = true;               ///< answer when done (true) or at once with a progress URL (false)
-  double frame_dt_s = 0.0;        ///< s of scene time between frames, so a client plays them in real time
+  std::optional<render::ClipFormat> clip;  ///< "animation": encode this clip while the frames render
+  double frame_dt_s = 0.0;        ///< s of scene time between frames on average, so a client plays them in real time
+  double run_end_s = 0.0;         ///< s, the run's end: the last frame's time (a run that stopped early ends sooner)
   nlohmann::json warnings = nlohmann::json::array();
   std::shared_ptr<StageList> prepare_stages = std::make_shared<StageList>();  ///< filled by make_frames
 };

@@ -29,7 +29,8 @@ RequestCost scene_cost(const scene::Scene& s, const scene::RunOptions& options, 
   cost.cpu_seconds += probes * frames * kProbeFrameSeconds;
   cost.peak_bytes = probes * frames * kProbeFrameBytes;
   if (options.record_frames) {
-    const double recorded = frames / std::max(1, options.frame_stride) + 1;
+    const double recorded = options.record_at.empty() ? frames / std::max(1, options.frame_stride) + 1
+                                                      : static_cast<double>(options.record_at.size());
     const double per_frame = static_cast<double>(s.bodies.size()) * kSnapshotBodyBytes +
                              static_cast<double>(s.joints.size()) * kSnapshotJointBytes;
     cost.peak_bytes += recorded * per_frame;
@@ -38,7 +39,11 @@ RequestCost scene_cost(const scene::Scene& s, const scene::RunOptions& options, 
   cost.work = std::to_string(static_cast<long long>(frames)) + " frames x " +
               std::to_string(static_cast<long long>(substeps)) + " substeps x " +
               std::to_string(static_cast<long long>(items)) + " bodies and joints";
-  if (options.record_frames) cost.work += ", every " + std::to_string(options.frame_stride) + ". frame recorded";
+  if (options.record_frames && options.record_at.empty()) {
+    cost.work += ", every " + std::to_string(options.frame_stride) + ". frame recorded";
+  } else if (options.record_frames) {
+    cost.work += ", " + std::to_string(options.record_at.size()) + " frames recorded";
+  }
 
   const double default_frames = static_cast<double>(scene::frame_count(kDefaultWorld));
   CostDrivers drivers;
@@ -50,7 +55,11 @@ RequestCost scene_cost(const scene::Scene& s, const scene::RunOptions& options, 
   drivers.add(prefix + "bodies", static_cast<double>(s.bodies.size()) / 10.0);
   drivers.add(prefix + "joints", static_cast<double>(s.joints.size()) / 10.0);
   drivers.add(prefix + "probes", probes * frames / (4.0 * default_frames));
-  if (options.record_frames) drivers.add("frame_stride", 1.0 + 1.0 / std::max(1, options.frame_stride));
+  if (options.record_frames && options.record_at.empty()) {
+    drivers.add("frame_stride", 1.0 + 1.0 / std::max(1, options.frame_stride));
+  } else if (options.record_frames) {
+    drivers.add("frames", 1.0 + static_cast<double>(options.record_at.size()) / std::max(1.0, frames + 1.0));
+  }
   cost.fields = drivers.fields();
   return cost;
 }

@@ -1,5 +1,7 @@
 #include "app/scene_frames.h"
 
+#include "app/probe_inset.h"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -12,11 +14,6 @@ namespace softtune::app {
 namespace {
 
 render::Vec2 vec(const Eigen::Vector2d& v) { return {v.x(), v.y()}; }
-
-render::Role role_of(const scene::BodySnapshot& b) {
-  if (b.is_static) return render::Role::static_body;
-  return b.probed ? render::Role::probed : render::Role::dynamic_body;
-}
 
 int body_index(const scene::Scene& scene, const std::string& id) {
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
@@ -50,6 +47,46 @@ render::SpringShape wheel_spring(const scene::Scene& scene, const scene::Snapsho
   s.rest_length_m = mount;
   s.current_length_m = (js.anchor_b - top).norm();
   return s;
+}
+
+// The debug marks of joint j (scene_frames.h, SceneLayers).
+void add_joint_marks(render::DrawFrame& frame, const scene::Scene& scene, const scene::Snapshot& snap, std::size_t j,
+                     const SceneLayers& layers) {
+  const scene::JointSettings& settings = scene.joints[j];
+  const scene::JointSnapshot& js = snap.joints[j];
+  const auto rest_mark = [&frame](const render::SpringShape& s) {
+    const Eigen::Vector2d a(s.a_m.x, s.a_m.y), b(s.b_m.x, s.b_m.y);
+    if ((b - a).norm() < 1e-9 || !(s.rest_length_m > 0.0)) return;
+    const Eigen::Vector2d along = (b - a).normalized();
+    frame.rest_marks.push_back({vec(a + along * s.rest_length_m), vec(along)});
+  };
+  switch (settings.kind) {
+    case scene::JointKind::distance:
+      if (layers.rest_marks && settings.tuning && js.rest_length) {
+        render::SpringShape s;
+        s.a_m = vec(js.anchor_a);
+        s.b_m = vec(js.anchor_b);
+        s.rest_length_m = *js.rest_length;
+        rest_mark(s);
+      }
+      return;
+    case scene::JointKind::wheel: {
+      const render::SpringShape s = wheel_spring(scene, snap, j);
+      if (layers.rest_marks) rest_mark(s);
+      if (layers.wheel_axes) {
+        // Box2D's translation is dot(pB - pA, axis): zero with the wheel centre at anchor A.
+        const Eigen::Vector2d top(s.a_m.x, s.a_m.y);
+        const Eigen::Vector2d rest = js.anchor_a;
+        frame.axes.push_back({vec(top), vec(rest + (rest - top) * 0.5), vec(rest), vec(js.anchor_b)});
+      }
+      return;
+    }
+    case scene::JointKind::weld:
+    case scene::JointKind::revolute:
+      if (layers.anchors) frame.anchor_pairs.push_back({vec(js.anchor_a), vec(js.anchor_b), kAnchorGapMagnify});
+      return;
+    case scene::JointKind::mouse: return;
+  }
 }
 
 void add_joint(render::DrawFrame& frame, const scene::Scene& scene, const scene::Snapshot& snap, std::size_t j) {
@@ -132,7 +169,8 @@ int left_frame_at(const scene::OscillatorRun& run, double limit_m) {
 }
 
 void add_oscillators(render::DrawFrame& frame, const scene::Scene& scene, const scene::SceneResult& result,
-                     const scene::Snapshot& snap) {
+                     const std::vector<scene::Snapshot>& snapshots, int index) {
+  const scene::Snapshot& snap = snapshots[index];
   int column = 0;
   for (std::size_t k = 0; k < scene.oscillators.size() && k < result.oscillators.size(); ++k) {
     const scene::OscillatorSettings& osc = scene.oscillators[k];
@@ -162,7 +200,19 @@ void add_oscillators(render::DrawFrame& frame, const scene::Scene& scene, const 
     const render::Vec2 label_at = vec(top - along * (0.12 * rest));
     frame.labels.push_back({method_label(osc.method), label_at, true});
     if (left >= 0 && snap.frame >= left) {
-      std::snprintf(label, sizeof label, "blew up at frame %d", left);
+      // Drawn as divergence: where the block went over its last game frames, out past the limit (the
+      // last point pulled in to 2 rest lengths: it may be 1e9 m out), and when it left, on the preview's
+      // own frame numbering.
+      render::Trail trail;
+      trail.divergent = true;
+      for (int f = std::max(0, left - kDivergenceTrailFrames); f <= left && f < static_cast<int>(run.x.size()); ++f) {
+        const double x = std::isfinite(run.x[f]) ? std::clamp(run.x[f], -2.0 * rest, 2.0 * rest) : 2.0 * rest;
+        trail.points_m.push_back(vec(top + along * (rest + x)));
+      }
+      if (trail.points_m.size() >= 2) frame.trails.push_back(std::move(trail));
+      int shown = index;
+      while (shown > 0 && snapshots[shown - 1].frame >= left) --shown;
+      std::snprintf(label, sizeof label, "left the view\nat t = %.2f s (frame %d)", left / scene.world.fps, shown);
       frame.labels.push_back({label, vec(top + along * rest), true});
       frame.anchors.push_back({vec(top)});
       continue;
@@ -184,6 +234,41 @@ void add_oscillators(render::DrawFrame& frame, const scene::Scene& scene, const 
   }
 }
 
+SceneLayers default_layers(const scene::Scene& scene) {
+  SceneLayers l;
+  int dynamic = 0;
+  for (const scene::BodySettings& b : scene.bodies) dynamic += !b.is_static;
+  l.contacts = dynamic >= 1 && scene.bodies.size() >= 2;
+  l.anchors = l.rest_marks = l.wheel_axes = l.mass_centres = false;
+  for (const scene::JointSettings& j : scene.joints) {
+    l.anchors = l.anchors || j.kind == scene::JointKind::revolute || j.kind == scene::JointKind::weld;
+    l.rest_marks = l.rest_marks || j.kind == scene::JointKind::wheel || (j.kind == scene::JointKind::distance && j.tuning);
+    l.wheel_axes = l.wheel_axes || j.kind == scene::JointKind::wheel;
+  }
+  for (const scene::ProbeSettings& p : scene.probes) l.mass_centres = l.mass_centres || p.kind == scene::ProbeKind::angle;
+  l.inset = !scene.probes.empty();
+  return l;
+}
+
+std::vector<render::Role> body_roles(const scene::Scene& scene) {
+  std::vector<render::Role> roles(scene.bodies.size(), render::Role::dynamic_body);
+  for (const scene::JointSettings& j : scene.joints) {
+    const int b = body_index(scene, j.body_b);
+    if (j.kind == scene::JointKind::wheel && b >= 0) roles[b] = render::Role::wheel;
+  }
+  int probed = 0;
+  for (const scene::ProbeSettings& p : scene.probes) {
+    const int b = p.body.empty() ? -1 : body_index(scene, p.body);
+    if (b < 0 || roles[b] == render::Role::probed || roles[b] == render::Role::probed_second) continue;
+    if (p.kind != scene::ProbeKind::displacement && p.kind != scene::ProbeKind::angle) continue;
+    roles[b] = probed++ == 0 ? render::Role::probed : render::Role::probed_second;
+  }
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (scene.bodies[i].is_static) roles[i] = render::Role::static_body;
+  }
+  return roles;
+}
+
 std::vector<std::pair<int, int>> trailed_points(const scene::Scene& scene) {
   std::set<std::pair<int, int>> seen;
   std::vector<std::pair<int, int>> out;
@@ -194,21 +279,42 @@ std::vector<std::pair<int, int>> trailed_points(const scene::Scene& scene) {
   return out;
 }
 
-render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots, int index) {
+render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots, int index,
+                              const SceneLayers& layers) {
   const scene::Snapshot& snapshot = snapshots[index];
   const int count = static_cast<int>(snapshots.size());
+  const std::vector<render::Role> roles = body_roles(scene);
+  // Centres of mass of what the tuning moves: probed bodies and bodies a joint holds (not a crate stack).
+  std::vector<bool> jointed(scene.bodies.size(), false);
+  for (const scene::JointSettings& j : scene.joints) {
+    for (const std::string& id : {j.body_a, j.body_b}) {
+      if (const int k = body_index(scene, id); k >= 0) jointed[k] = true;
+    }
+  }
+  for (std::size_t i = 0; i < roles.size(); ++i) {
+    if (roles[i] == render::Role::probed || roles[i] == render::Role::probed_second) jointed[i] = true;
+  }
   render::DrawFrame frame;
-  for (const scene::BodySnapshot& b : snapshot.bodies) {
+  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+    const scene::BodySnapshot& b = snapshot.bodies[i];
+    const render::Role role = i < roles.size() ? roles[i] : render::Role::dynamic_body;
+    if (layers.mass_centres && !b.is_static && jointed[i]) frame.mass_centres.push_back({vec(b.mass_centre)});
     if (b.is_circle) {
-      frame.circles.push_back({vec(b.center), b.radius, b.angle, role_of(b)});
+      frame.circles.push_back({vec(b.center), b.radius, b.angle, role});
       continue;
     }
     render::PolygonShape polygon;
-    polygon.role = role_of(b);
+    polygon.role = role;
     for (const Eigen::Vector2d& v : b.vertices) polygon.vertices_m.push_back(vec(v));
     frame.polygons.push_back(std::move(polygon));
   }
-  for (std::size_t j = 0; j < snapshot.joints.size() && j < scene.joints.size(); ++j) add_joint(frame, scene, snapshot, j);
+  for (std::size_t j = 0; j < snapshot.joints.size() && j < scene.joints.size(); ++j) {
+    add_joint(frame, scene, snapshot, j);
+    add_joint_marks(frame, scene, snapshot, j, layers);
+  }
+  if (layers.contacts) {
+    for (const scene::ContactSnapshot& c : snapshot.contacts) frame.contacts.push_back({vec(c.point), vec(c.normal)});
+  }
   for (const auto& point : trailed_points(scene)) {
     render::Trail trail;
     for (int k = index; k >= 0 && snapshot.time_s - snapshots[k].time_s <= kTrailSeconds + 1e-9; --k) {
@@ -218,9 +324,14 @@ render::DrawFrame scene_frame(const scene::Scene& scene, const std::vector<scene
   }
   char caption[160];
   std::snprintf(caption, sizeof caption, "%s  \u00b7  t = %.2f s  \u00b7  frame %d/%d", scene.name.c_str(), snapshot.time_s,
-                index + 1, count);
+                index, count - 1);
   frame.caption = caption;
   frame.settings = scene_settings(scene);
+  if (layers.anchors && !frame.anchor_pairs.empty()) {
+    char gap[48];
+    std::snprintf(gap, sizeof gap, "  \u00b7  pin gaps \u00d7%g", kAnchorGapMagnify);
+    frame.settings += gap;
+  }
   return frame;
 }
 
@@ -274,18 +385,25 @@ render::Bounds followed_bounds(const scene::Scene& scene, const scene::Snapshot&
 }
 
 render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene::Snapshot>& snapshots,
-                              const scene::SceneResult* result) {
+                              const scene::SceneResult* result, const SceneLayers& layers) {
   render::FrameSet set;
   const std::vector<std::string> legend = result ? scene_legend(scene, *result) : std::vector<std::string>{};
+  const std::optional<render::Inset> inset =
+      result && layers.inset ? probe_inset(scene, *result, inset_probe(scene, *result)) : std::nullopt;
   set.camera.auto_fit = scene.camera.fit;
   set.camera.centre_m = vec(scene.camera.center);
   set.camera.width_m = scene.camera.width_m;
   set.follow.width_m = scene.camera.width_m;
+  set.run_end_s = scene::frame_count(scene.world) / scene.world.fps;
   const int count = static_cast<int>(snapshots.size());
   for (int i = 0; i < count; ++i) {
-    set.frames.push_back(scene_frame(scene, snapshots, i));
+    set.frames.push_back(scene_frame(scene, snapshots, i, layers));
     set.frames.back().legend = legend;
-    if (result) add_oscillators(set.frames.back(), scene, *result, snapshots[i]);
+    if (inset) {
+      set.frames.back().inset = inset;
+      set.frames.back().inset->cursor_s = snapshots[i].time_s;
+    }
+    if (result) add_oscillators(set.frames.back(), scene, *result, snapshots, i);
     set.times_s.push_back(snapshots[i].time_s);
     if (!scene.camera.follow.empty()) set.follow.bounds_m.push_back(followed_bounds(scene, snapshots[i]));
   }

@@ -28,8 +28,9 @@ constexpr const char* kRenderHelp = R"(softtune render: preview frames of a pres
     --basis-fps B   --frequency F   --oscillation free|some|none   --damping-ratio Z
     --mass M   --fps F   --substeps N   --mode standard|exact
 
-Writes DIR/frame_0000.png ... and DIR/filmstrip.png (and DIR/animation.webp or .gif), and prints
-{id, frames, filmstrip, animation, stages, timings}.
+Writes DIR/frame_0000.png ... (spread over the whole run: the first at t = 0, the last at its end),
+DIR/frames.json (each frame's file and simulated time) and DIR/filmstrip.png (and DIR/animation.webp or
+.gif), and prints {id, frames, manifest, filmstrip, animation, stages, timings}.
 Presets: every file in presets/; oscillator draws the soft method beside the exact analytic ghost.
 Bad input: exit code 2 and a problem JSON on stderr naming the field.
 )";
@@ -98,6 +99,7 @@ int run_render(const Args& args) {
     if (auto name = flags.get("animation")) {
       clip = render::clip_format(*name);
       if (!clip) throw codec::invalid_field("--animation", "must be webp or gif");
+      request["animation"] = *name;  // encoded while the frames render; over the clip cap, refused before
     }
     const std::filesystem::path dir(*out_dir);
     std::error_code ec;
@@ -120,6 +122,11 @@ int run_render(const Args& args) {
       write_file(dir / frame_name(i), *previews.frame_png(id, i));
       out["frames"].push_back((dir / frame_name(i)).string());
     }
+    // frames.json: each frame's file and simulated time, as in the answer's manifest (with file names).
+    nlohmann::json manifest = answer.at("manifest");
+    for (nlohmann::json& f : manifest.at("frames")) f["file"] = frame_name(f.at("index").get<int>());
+    write_file(dir / "frames.json", manifest.dump(2) + "\n");
+    out["manifest"] = (dir / "frames.json").string();
     write_file(dir / "filmstrip.png", *previews.filmstrip_png(id));
     out["filmstrip"] = (dir / "filmstrip.png").string();
     if (clip) {

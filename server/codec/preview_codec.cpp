@@ -52,9 +52,24 @@ std::string canonical_oscillator_request(const render::OscillatorScene& s) {
       {"preset", "oscillator"},   {"effective_mass", s.mass_kg}, {"omega", s.omega},
       {"damping_ratio", s.damping_ratio}, {"fps", s.fps},       {"substeps", s.substeps},
       {"method", std::string(method_name(s.method))}, {"initial_displacement", s.initial_displacement_m},
-      {"rest_length", s.rest_length_m},
+      {"rest_length", s.rest_length_m}, {"duration_s", s.duration_s},
   };
   return doc.dump();  // keys sorted, doubles written to round-trip
+}
+
+nlohmann::json encode_frame_manifest(const render::Preview& p, const std::function<std::string(int frame)>& frame_file) {
+  nlohmann::json frames = nlohmann::json::array();
+  const int n = static_cast<int>(p.frames_png.size());
+  for (int i = 0; i < n; ++i) {
+    const double t = i < static_cast<int>(p.frame_times_s.size()) ? p.frame_times_s[i] : 0.0;
+    frames.push_back({{"index", i}, {"file", frame_file(i)}, {"time_s", number_or_null(t)}});
+  }
+  const double first = n > 0 && !p.frame_times_s.empty() ? p.frame_times_s.front() : 0.0;
+  const double last = n > 0 && !p.frame_times_s.empty() ? p.frame_times_s.back() : 0.0;
+  return {{"frame_count", n},
+          {"run_end_s", number_or_null(p.run_end_s)},
+          {"frame_dt_s", number_or_null(n > 1 ? (last - first) / (n - 1) : 0.0)},
+          {"frames", std::move(frames)}};
 }
 
 nlohmann::json encode_preview(const render::Preview& p, bool from_cache,
@@ -76,6 +91,8 @@ nlohmann::json encode_preview(const render::Preview& p, bool from_cache,
                    {"render_ms", number_or_null(t.render_ms)},
                    {"png_ms", number_or_null(t.png_ms)},
                    {"filmstrip_ms", number_or_null(t.filmstrip_ms)},
+                   {"clip_ms", number_or_null(t.clip_ms)},
+                   {"clip_tail_ms", number_or_null(t.clip_tail_ms)},
                    {"workers", t.workers}}},
   };
 }

@@ -32,4 +32,9 @@ std::string canonical_oscillator_request(const render::OscillatorScene& scene);
 nlohmann::json encode_preview(const render::Preview& preview, bool from_cache,
                               const std::function<std::string(int frame)>& frame_url, const std::string& filmstrip_url);
 
+/// The frames' manifest (frames.json beside the PNGs, `manifest` in the preview answer): {frame_count,
+/// run_end_s, frame_dt_s (the mean gap), frames: [{index, file: frame_file(index), time_s}]}, each time the
+/// frame's simulated time in the run; frames count from 0, like their files.
+nlohmann::json encode_frame_manifest(const render::Preview& preview, const std::function<std::string(int frame)>& frame_file);
+
 }  // namespace softtune::codec

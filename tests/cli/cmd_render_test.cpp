@@ -56,6 +56,29 @@ TEST_F(RenderCommand, WritesFramesAndFilmstrip) {
     }
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "frame_0005.png"));
+  // frames.json beside them: each frame's file and simulated time, spread over the oscillator's 3 s run
+  // (180 steps at 60 fps: frames at steps 0, 45, 90, 135, 180).
+  std::ifstream manifest_file(dir / "frames.json");
+  ASSERT_TRUE(manifest_file);
+  const auto manifest = nlohmann::json::parse(manifest_file);
+  EXPECT_EQ(doc["manifest"], (dir / "frames.json").string());
+  ASSERT_EQ(manifest["frames"].size(), 5u);
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_EQ(manifest["frames"][k]["file"], "frame_000" + std::to_string(k) + ".png");
+    EXPECT_NEAR(manifest["frames"][k]["time_s"].get<double>(), 45.0 * k / 60.0, 1e-12);
+  }
+  EXPECT_DOUBLE_EQ(manifest["run_end_s"].get<double>(), 3.0);
+}
+
+TEST_F(RenderCommand, AClipOverItsCapIsRefusedBeforeAnyFrameRenders) {
+  // 121 frames of 1280x720 is one frame over the clip cap: a 422 naming frames, and no file written.
+  std::string err;
+  EXPECT_EQ(run({"--preset", "vehicle", "--frames", "121", "--size", "1280x720", "--out", dir.string(), "--animation", "webp"},
+                nullptr, &err),
+            2);
+  EXPECT_NE(err.find("\"frames\""), std::string::npos) << err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "frame_0000.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "filmstrip.png"));
 }
 
 TEST_F(RenderCommand, AnimationFlagWritesTheClip) {

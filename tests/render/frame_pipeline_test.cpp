@@ -373,3 +373,40 @@ TEST(FramePipeline, DifferentRequestsInParallel) {
 
 }  // namespace
 }  // namespace softtune::render
+
+namespace softtune::render {
+namespace {
+
+// The clip stage: frames handed to the encoder in order as they render, on 1 to 3 workers, with more
+// frames than the stage holds as pixels (so some are decoded back from their PNGs), gives the very clip
+// that encoding the finished PNGs gives (clip_test.cpp decodes that one back frame by frame).
+TEST(FramePipeline, TheClipStageEncodesTheFramesInOrderWhileTheyRender) {
+  for (const ClipFormat format : {ClipFormat::webp, ClipFormat::gif}) {
+    for (const int workers : {1, 2, 3}) {
+      PipelineOptions o = fake_options();
+      o.workers = workers;
+      FramePipeline p(o);
+      const int n = 3 * kClipPendingFrames;
+      FrameSet frames = sliding_box(n);
+      for (int k = 0; k < n; ++k) frames.times_s.push_back(0.1 * k);
+      const auto preview = p.submit("clip", small(n), [&] { return frames; }, format)->wait();
+      ASSERT_EQ(preview->clip_format, format);
+      EXPECT_EQ(preview->clip, encode_clip(format, preview->frames_png, preview->frame_times_s))
+          << clip_format_name(format) << ", " << workers << " workers";
+      EXPECT_GT(preview->timings.clip_ms, 0.0);
+    }
+  }
+}
+
+TEST(FramePipeline, AClipOverItsCapIsRefusedBeforeAnyFrameIsMade) {
+  FramePipeline p(fake_options());
+  bool called = false;
+  EXPECT_THROW(p.submit("big", {121, {1280, 720}, 0}, [&] { called = true; return FrameSet{}; }, ClipFormat::webp),
+               std::invalid_argument);
+  EXPECT_FALSE(called);
+  // Without a clip the same preview is allowed.
+  EXPECT_NO_THROW(p.submit("small", {2, {1280, 720}, 0}, [] { return sliding_box(2); }, std::nullopt)->wait());
+}
+
+}  // namespace
+}  // namespace softtune::render

@@ -11,6 +11,7 @@
 #include "png_decode.h"
 #include "softtune/analytic.h"
 #include "softtune/designer.h"
+#include "softtune/render/camera_path.h"
 #include "softtune/render/palette.h"
 
 namespace softtune::render {
@@ -133,7 +134,7 @@ TEST(OscillatorFrames, DrawModelPlacesBlocksSpringsAndGhosts) {
   EXPECT_DOUBLE_EQ(f.springs[0].b_m.x, s.rest_length_m + 0.3 - 0.5 * kOscillatorBlockSize);
   EXPECT_DOUBLE_EQ(f.springs[0].rest_length_m, s.rest_length_m - 0.5 * kOscillatorBlockSize);
   EXPECT_TRUE(f.springs[1].ghost);
-  EXPECT_NE(f.caption.find("frame 15/60"), std::string::npos);
+  EXPECT_NE(f.caption.find("frame 15/59"), std::string::npos) << f.caption;  // counted from 0, like the files
   ASSERT_EQ(f.legend.size(), 2u);
   EXPECT_NE(f.legend[1].find("error +0.100 m"), std::string::npos);
 }
@@ -143,23 +144,45 @@ TEST(OscillatorFrames, RenderedBlocksSitAtTheirProjectedPositions) {
   const PreviewSettings settings{24, {640, 360}, 0};
   const FrameSet set = oscillator_frames(s, settings.frames);
   const View v = make_view(run_camera(set, settings.size), settings.size);
-  const auto samples = simulate_oscillator(s, settings.frames);
+  const auto samples = simulate_oscillator(s, oscillator_run_frames(s) + 1);
   FramePipeline p;
   const auto preview = p.submit("oscillator-test", settings, [&] { return set; })->wait();
-  for (int k : {0, 11, 23}) {
+  // 24 frames over the 3 s run (180 steps): frame k shows game frame round(180 k / 23).
+  for (const auto [k, step] : {std::pair{0, 0}, {11, 86}, {23, 180}}) {
+    EXPECT_DOUBLE_EQ(set.times_s[k], step / 60.0);
     const test::Decoded d = test::decode_png(preview->frames_png[k]);
-    const double sim_x = oscillator_block_x(s, samples[k].simulated.x);
+    const double sim_x = oscillator_block_x(s, samples[step].simulated.x);
     const std::uint8_t* q = d.at(static_cast<int>(v.px(sim_x)), static_cast<int>(v.py(oscillator_simulated_lane_y(s))));
     const Rgba probed = role_colours(Role::probed).fill;
     EXPECT_EQ((Rgba{q[0], q[1], q[2], q[3]}), probed) << "frame " << k;
     // The ghost on the shelf: the translucent ghost fill over the background.
-    const double exact_x = oscillator_block_x(s, samples[k].analytic.x);
+    const double exact_x = oscillator_block_x(s, samples[step].analytic.x);
     const std::uint8_t* g = d.at(static_cast<int>(v.px(exact_x)), static_cast<int>(v.py(oscillator_analytic_lane_y(s) + 0.1)));
     // Over the background, or over a faint grid line where one passes under the ghost.
     const Rgba ghost = role_colours(Role::ghost).fill, bg = palette::kBackground, grid = palette::kGrid;
     auto over = [](double top, int alpha, double below) { return (top * alpha + below * (255 - alpha)) / 255.0; };
     const double on_bg = over(ghost.g, ghost.a, bg.g), on_grid = over(ghost.g, ghost.a, over(grid.g, grid.a, bg.g));
     EXPECT_LT(std::min(std::abs(g[1] - on_bg), std::abs(g[1] - on_grid)), 2.0) << "frame " << k << ": " << int(g[1]);
+  }
+}
+
+TEST(OscillatorFrames, TheExactLaneStaysInViewBelowTheBand) {
+  // Its analytic block is drawn as a ghost, but it is half of this preview: the camera frames it (an A/B
+  // ghost of a scene it never does, camera_path.h), so both blocks stay whole below the title band.
+  const OscillatorScene s = scene(2.0, 0.5, 60.0, 1, Method::soft);
+  const FrameSet set = oscillator_frames(s, 30);
+  for (const ImageSize size : {ImageSize{640, 360}, ImageSize{360, 640}}) {
+    const Bounds view = visible_below_band(run_camera(set, size), size);
+    for (const DrawFrame& f : set.frames) {
+      for (const PolygonShape& p : f.polygons) {
+        for (const Vec2 v : p.vertices_m) {
+          EXPECT_GE(v.y, view.lo.y - 1e-9);
+          EXPECT_LE(v.y, view.hi.y + 1e-9) << "a block above the band at " << size.width << "x" << size.height;
+          EXPECT_GE(v.x, view.lo.x - 1e-9);
+          EXPECT_LE(v.x, view.hi.x + 1e-9);
+        }
+      }
+    }
   }
 }
 

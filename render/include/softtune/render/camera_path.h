@@ -16,7 +16,9 @@ inline constexpr double kStaticReach = 0.25;
 
 /// What a fitted camera must show of a run: every moving shape (any role but static), spring, pin,
 /// target, trail and anchor of every frame, and the static shapes clipped to the moving box grown by
-/// kStaticReach. With nothing moving, everything.
+/// kStaticReach. With nothing moving, everything. Ghosts (Role::ghost, ghost springs, pins and anchors)
+/// never count: the camera frames the real run, and a ghost that leaves it gets an arrow at the edge
+/// (tessellate.h).
 Bounds action_bounds(const std::vector<DrawFrame>& frames);
 
 /// Frames a camera follows, with `bounds_m` of the followed thing in each frame (one per frame).
@@ -28,11 +30,11 @@ struct Follow {
 /// One camera per frame. `fixed` (auto_fit false) is used as is; otherwise a follow with one box per
 /// frame tracks the followed box (centre x smoothed over about a quarter of the run's frames, y held at
 /// the action's height while that fits) and keeps it whole below the band; otherwise one camera fitted
-/// to action_bounds over the run.
+/// to action_bounds over the run. The band is the first frame's (caption_band, tessellate.h).
 std::vector<Camera> run_cameras(const Camera& fixed, const Follow& follow, const std::vector<DrawFrame>& frames,
                                 ImageSize size);
 
-/// The image rectangle, in world metres, that a camera shows below the title band.
-Bounds visible_below_band(const Camera& camera, ImageSize size);
+/// The image rectangle, in world metres, that a camera shows below the title band (`band` of the height).
+Bounds visible_below_band(const Camera& camera, ImageSize size, double band = kCaptionBand);
 
 }  // namespace softtune::render

@@ -23,6 +23,8 @@ enum class Role : std::uint8_t {
   dynamic_body,  ///< simulated
   probed,        ///< the body whose motion the scene measures
   ghost,         ///< the exact analytic motion, drawn translucent beside the simulated one
+  wheel,         ///< a dynamic body a wheel joint carries (the vehicle's wheels)
+  probed_second, ///< a second probed body (the bridge's load beside its deck): its own colour
 };
 
 /// A convex polygon given by its world vertices (either winding).
@@ -73,6 +75,7 @@ struct TargetShape {
 /// The recent path of a probed point, oldest first; drawn fading in from the oldest point.
 struct Trail {
   std::vector<Vec2> points_m;
+  bool divergent = false;  ///< a blown-up method's last steps out of the view: the divergence colour
 };
 
 /// A joint anchor.
@@ -89,8 +92,55 @@ struct Label {
   bool centred = false;
 };
 
+/// Debug marks, as the engines' own debug views draw them (Box2D's testbed: contact points and normals,
+/// b2Draw::e_centerOfMassBit; MuJoCo's viewer: joint anchors and axes). Each layer is switchable in the
+/// request (server/app/scene_frames.h, SceneLayers).
+struct ContactMark {
+  Vec2 at_m;
+  Vec2 normal{0.0, 1.0};  ///< unit, world
+};
+/// A joint's two anchors (a on body_a, b on body_b): a ring at a, a dot at b, and the gap a -> b drawn
+/// `magnify` times its length from a, so a pin's 1.6 cm stretch shows.
+struct AnchorPair {
+  Vec2 a_m;
+  Vec2 b_m;
+  double magnify = 1.0;
+};
+/// A tick across a spring where its rest length ends, measured from its first anchor.
+struct RestMark {
+  Vec2 at_m;
+  Vec2 along{1.0, 0.0};  ///< unit, the spring's direction
+};
+/// A wheel joint's axis through the wheel: the line it may travel on, its rest point (zero translation)
+/// and where the wheel centre is now (the travel, rest to now, drawn thick).
+struct AxisMark {
+  Vec2 from_m;
+  Vec2 to_m;
+  Vec2 rest_m;
+  Vec2 now_m;
+};
+struct MassCentre {
+  Vec2 at_m;
+};
+
+/// A small plot in a corner of the frame (below the title band): a probe over the run (`value` at `t_s`), the response
+/// its fit gives and the one that was asked for (NaN where a curve has no value, e.g. before the fit's
+/// window), and a cursor at the frame's own time. `title` names the probe, its unit and the two curves.
+enum class Corner : std::uint8_t { bottom_right, bottom_left, top_right, top_left };
+
+struct Inset {
+  std::string title;
+  Corner corner = Corner::bottom_right;  ///< where it goes (the frame pipeline picks the run's quietest)
+  std::vector<double> t_s;     ///< s
+  std::vector<double> value;   ///< probe units, one per t_s
+  std::vector<double> fitted;  ///< one per t_s, or empty
+  std::vector<double> asked;   ///< one per t_s, or empty
+  double cursor_s = 0.0;       ///< s
+};
+
 /// One frame of a scene. Drawn back to front: grid, ground, trails, polygons and circles in order,
-/// springs, pins, targets, anchors, labels, caption.
+/// springs, pins, targets, anchors, the debug marks (rest marks, axes, anchor pairs, centres of mass,
+/// contacts), inset, labels, caption.
 struct DrawFrame {
   std::vector<PolygonShape> polygons;
   std::vector<CircleShape> circles;
@@ -100,10 +150,19 @@ struct DrawFrame {
   std::vector<Trail> trails;
   std::vector<AnchorDot> anchors;
   std::vector<Label> labels;
+  std::vector<ContactMark> contacts;
+  std::vector<AnchorPair> anchor_pairs;
+  std::vector<RestMark> rest_marks;
+  std::vector<AxisMark> axes;
+  std::vector<MassCentre> mass_centres;
   std::optional<double> ground_y_m;  ///< m; a ground line with earth below when set
   std::string caption;               ///< title band, top-left: what and when (name, time, frame); UTF-8
   std::string settings;              ///< title band, top-right: mode, fps, substeps (the grid step is added)
   std::vector<std::string> legend;   ///< title band, under the caption: asked against measured, per joint
+  std::optional<Inset> inset;        ///< the probe over time, in a corner
+  /// The ghost is part of the picture, not a second run: the oscillator's exact analytic lane on its
+  /// shelf. Then the camera frames it too (action_bounds); an A/B ghost never does.
+  bool ghost_in_camera = false;
 };
 
 /// Where the camera looks. Fixed (from a preset) or fitted to the bounds of every frame of a run.
@@ -122,8 +181,8 @@ struct Bounds {
   void add(const Bounds& b);
 };
 
-/// Bounds of every shape, spring, pin, target, trail and anchor of a frame, and the ground height
-/// (labels excluded).
+/// Bounds of every shape, spring, pin, target, trail (but a divergent one) and anchor of a frame, and
+/// the ground height (labels and the other debug marks excluded).
 Bounds bounds_of(const DrawFrame& frame);
 
 }  // namespace softtune::render

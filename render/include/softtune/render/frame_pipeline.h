@@ -22,6 +22,7 @@
 
 #include "softtune/diagnostics.h"
 #include "softtune/render/camera_path.h"
+#include "softtune/render/clip.h"
 #include "softtune/render/draw_model.h"
 #include "softtune/render/filmstrip.h"
 #include "softtune/render/png.h"
@@ -55,8 +56,10 @@ struct FrameSet {
   Camera camera;
   Follow follow;
   std::vector<DrawFrame> frames;
-  /// s of each frame in the run (for a clip's frame timing); empty: 1/60 s apart.
+  /// s of each frame in the run (the manifest, a clip's frame timing); empty: 1/60 s apart.
   std::vector<double> times_s;
+  /// s, where the run ends (the manifest's run_end_s); the last frame's time when frames span the run.
+  double run_end_s = 0.0;
 };
 
 /// The first frame's camera of a run (run_cameras).
@@ -68,6 +71,8 @@ struct PreviewTimings {
   double render_ms = 0.0;     ///< summed over frames: tessellation, raster and read-back
   double png_ms = 0.0;        ///< summed over frames: PNG encoding
   double filmstrip_ms = 0.0;  ///< the filmstrip PNG
+  double clip_ms = 0.0;       ///< summed over frames: the clip stage's encoding (0 without a clip)
+  double clip_tail_ms = 0.0;  ///< the clip's encoding left after the last frame rendered, and its assembly
   int workers = 0;            ///< render workers in the pool
 };
 
@@ -79,6 +84,9 @@ struct Preview {
   std::vector<std::string> frames_png;
   std::string filmstrip_png;
   std::vector<double> frame_times_s;  ///< s, each frame's time in the run (FrameSet::times_s)
+  double run_end_s = 0.0;             ///< s, FrameSet::run_end_s
+  std::optional<ClipFormat> clip_format;  ///< the clip encoded while the frames rendered, if one was asked for
+  std::string clip;                       ///< its bytes
   PreviewTimings timings;
   StageList stages;  ///< render, png_encode
   std::size_t bytes() const;
@@ -123,7 +131,12 @@ struct PipelineOptions {
   int release_renderer_after_ms = 30'000;
   /// Makes a worker's renderer on its first frame; empty: the OSMesa backend with `renderer`.
   std::function<std::unique_ptr<Renderer>()> make_renderer;
+  WebpClipOptions webp;  ///< the clip stage's WebP settings
 };
+
+/// Frames a clip stage holds as pixels while they wait for the encoder; past that a waiting frame is
+/// decoded back from its PNG when its turn comes (a 1280x720 frame is 3.7 MB of pixels).
+inline constexpr int kClipPendingFrames = 8;
 
 class FramePipeline {
  public:
@@ -137,9 +150,13 @@ class FramePipeline {
 
   /// The cached preview, the job already making it, or a new job. `make_frames` runs (on the calling
   /// thread) only for a new job and must return settings.frames frames; its exceptions propagate.
-  /// Throws std::invalid_argument for settings that break a cap.
+  /// Throws std::invalid_argument for settings that break a cap, or a clip over validate_clip's.
+  /// With `clip`, a new job also encodes that clip as a stage of the pipeline: each frame goes to the
+  /// encoder, in order, as soon as it and the frames before it are rendered, on whichever worker finds
+  /// the encoder free (the others keep rendering), so the clip is done about when the frames are.
   std::shared_ptr<PreviewJob> submit(std::string_view canonical_request, const PreviewSettings& settings,
-                                     const std::function<FrameSet()>& make_frames);
+                                     const std::function<FrameSet()>& make_frames,
+                                     std::optional<ClipFormat> clip = std::nullopt);
 
   /// A cached preview by id (GET of a frame), or nullptr.
   std::shared_ptr<const Preview> cached(const std::string& id);
@@ -157,6 +174,7 @@ class FramePipeline {
   void worker_loop();
   void run_task(const Task& task, std::unique_ptr<Renderer>& renderer, std::vector<std::uint8_t>& pixels);
   void finish(JobState& job);
+  void feed_clip(JobState& job, bool wait);
 
   PipelineOptions options_;
   support::LruCache<std::string, Preview> cache_;  ///< by id, weighed by Preview::bytes()

@@ -22,7 +22,11 @@ struct OscillatorScene {
   Method method = Method::soft;
   double initial_displacement_m = 0.5;  ///< x0 (released at rest, v0 = 0)
   double rest_length_m = 2.0;           ///< wall to block centre at x = 0
+  double duration_s = 3.0;              ///< s the run lasts (the oscillator preset's world.duration_s)
 };
+
+/// Game frames the oscillator's run steps: round(duration_s fps), so its frames span 0..run_frames.
+int oscillator_run_frames(const OscillatorScene& scene);
 
 inline constexpr double kOscillatorBlockSize = 0.5;  ///< m, side of the square block
 
@@ -30,12 +34,13 @@ inline constexpr double kOscillatorBlockSize = 0.5;  ///< m, side of the square 
 /// the request, and soft or soft_exact from its mode.
 OscillatorScene oscillator_scene(const TuneRequest& request, const TuneResult& result);
 
-/// Frame k at t = k / fps: the simulated state after k frames and the analytic state at t.
+/// Game frame k at t = k / fps: the simulated state after k frames and the analytic state at t.
 struct OscillatorSample {
   double t_s = 0.0;
   State simulated;
   State analytic;
 };
+/// Game frames 0..frames-1.
 std::vector<OscillatorSample> simulate_oscillator(const OscillatorScene& scene, int frames);
 
 /// World x of the block centre for displacement x: rest_length + x.
@@ -44,9 +49,11 @@ double oscillator_block_x(const OscillatorScene& scene, double displacement_m);
 double oscillator_simulated_lane_y(const OscillatorScene& scene);
 double oscillator_analytic_lane_y(const OscillatorScene& scene);
 
+/// Preview frame `index` of `frames` (counted from 0, frame_schedule.h) showing `sample`.
 DrawFrame oscillator_frame(const OscillatorScene& scene, const OscillatorSample& sample, int index, int frames);
 
-/// Every frame, with an auto-fit camera.
+/// `frames` frames spread over the run (spread_frames: the first at t = 0, the last at duration_s), with
+/// an auto-fit camera.
 FrameSet oscillator_frames(const OscillatorScene& scene, int frames);
 
 }  // namespace softtune::render

@@ -23,13 +23,25 @@ inline constexpr Rgba kBandRule{40, 50, 70, 60};      ///< the line under the ba
 inline constexpr Rgba kAnchor{20, 22, 28, 255};
 inline constexpr Rgba kSpringNeutral{80, 84, 92, 255};
 inline constexpr Rgba kSpringStretched{214, 48, 39, 255};   ///< at stretch ratio >= 1 + kFullStretch
-inline constexpr Rgba kSpringCompressed{33, 102, 222, 255};  ///< at stretch ratio <= 1 - kFullStretch
+inline constexpr Rgba kSpringCompressed{20, 70, 200, 255};  ///< at stretch ratio <= 1 - kFullStretch
 inline constexpr double kFullStretch = 0.3;                  ///< |ratio - 1| that gives the full colour
 inline constexpr std::uint8_t kGhostAlpha = 110;             ///< springs and anchors of the ghost
-inline constexpr Rgba kRod{62, 68, 80, 255};                 ///< a rigid distance joint
-inline constexpr Rgba kMouseLink{142, 58, 196, 255};         ///< a mouse joint's link and target
+inline constexpr Rgba kRod{120, 84, 50, 255};                ///< a rigid distance joint
+inline constexpr Rgba kMouseLink{150, 50, 200, 255};         ///< a mouse joint's link and target
 inline constexpr Rgba kPinFace{246, 246, 242, 255};          ///< the face inside a pin's ring
-inline constexpr Rgba kTrail{250, 140, 0, 200};              ///< a probed point's path (newest end)
+inline constexpr Rgba kTrail{0, 130, 60, 220};               ///< a probed point's path (newest end)
+inline constexpr Rgba kDivergence{160, 0, 90, 235};          ///< a blown-up method's last steps (Trail::divergent)
+// Debug layers, as Box2D's testbed and MuJoCo's viewer draw them: dark marks with a light halo, so they
+// read over any body.
+inline constexpr Rgba kContact{20, 22, 28, 255};             ///< contact points and their normals
+inline constexpr Rgba kHalo{255, 255, 255, 200};             ///< under contact, anchor and centre-of-mass marks
+inline constexpr Rgba kAnchorGap{214, 48, 39, 255};          ///< a pin's anchor gap, magnified
+inline constexpr Rgba kRestMark{20, 22, 28, 255};            ///< rest-length ticks, wheel axes and travel
+inline constexpr Rgba kInsetPanel{252, 252, 249, 225};       ///< the probe inset's panel
+inline constexpr Rgba kInsetProbe{28, 30, 36, 255};          ///< the probe's samples
+inline constexpr Rgba kInsetFit{0, 150, 110, 255};           ///< its fitted response
+inline constexpr Rgba kInsetAsked{200, 40, 130, 200};        ///< the asked response (the ghost's pink)
+inline constexpr Rgba kInsetCursor{214, 48, 39, 255};        ///< the frame's time
 }  // namespace palette
 
 /// Fill and outline of a role.

@@ -38,6 +38,41 @@ struct StrokeSizes {
 };
 StrokeSizes stroke_sizes(ImageSize size);
 
+/// The smallest legend text, px at a 360 px tall image (scaled with the height): rather than shrink
+/// below it, the title band grows (caption_band).
+inline constexpr double kMinLegendPxAt360 = 11.0;
+int min_legend_px(ImageSize size);
+
+/// The title band's height as a fraction of the image: kCaptionBand, or taller (up to kMaxCaptionBand)
+/// when the caption and `legend_lines` lines, one per row at min_legend_px, would not fit in it. Fixed
+/// by the line count alone, so every frame of a run has the same band as its camera (run_cameras).
+double caption_band(ImageSize size, int legend_lines);
+
+/// Where the probe inset's plot goes (px, top-left and size) in an image of `size`: `corner` (a top one
+/// just under a title band of `band`, a fraction of the height), kInsetWidth x kInsetHeight of the
+/// image, its title (two lines) above the plot.
+inline constexpr double kInsetWidth = 0.32, kInsetHeight = 0.24;
+struct InsetBox {
+  double x = 0, y = 0, w = 0, h = 0;  ///< the whole panel
+  double plot_x = 0, plot_y = 0, plot_w = 0, plot_h = 0;
+  int title_px = 8;
+};
+InsetBox inset_box(ImageSize size, Corner corner = Corner::bottom_right, double band = kCaptionBand);
+
+/// The corner whose inset box the run's moving shapes (every body but static ones and ghosts, every
+/// spring and anchor) cover least, summed over the frames as each camera shows them; ties go to
+/// bottom right, then bottom left, top right, top left. So the inset never sits on the stiff preset's
+/// soft block or the bridge's deck end when another corner is free.
+Corner quietest_corner(const std::vector<DrawFrame>& frames, const std::vector<Camera>& cameras, ImageSize size);
+
+/// Pixel y of `value` in the inset's plot, for a plot spanning [lo, hi] (the samples' range, widened to
+/// hold every curve): the plot's bottom at lo, its top at hi.
+double inset_y(const InsetBox& box, double value, double lo, double hi);
+/// Pixel x of time t in the inset's plot spanning [t0, t1].
+double inset_x(const InsetBox& box, double t, double t0, double t1);
+/// The value range the inset plots: every finite value of the three curves (a flat series widened).
+std::pair<double, double> inset_range(const Inset& inset);
+
 /// Grid step in metres: the smallest 1, 2, 5 x 10^k at least `min_spacing_px` apart on screen.
 double grid_step_m(double pixels_per_m, double min_spacing_px);
 
@@ -58,7 +93,7 @@ struct PlacedText {
 /// Where the frame's text goes: the caption at the band's top-left, the settings and grid step at its
 /// top-right, the legend under the caption in two columns (entries beyond the band's room summed up as
 /// "+N more"), all shrunk until they fit the band's width; labels at their world positions. The title
-/// band is the top kCaptionBand of the image.
+/// band is the top caption_band of the image.
 std::vector<PlacedText> layout_text_overlay(const DrawFrame& frame, const View& view);
 
 /// The frame's text (layout_text_overlay), drawn last on the read-back pixels: FreeType glyphs cost a

@@ -28,10 +28,14 @@ inline bool is_rgba_of(ImageSize size, std::size_t bytes) {
 /// camera is fitted: four lines of text at 360 px.
 inline constexpr double kCaptionBand = 0.2;
 
+/// The tallest title band (fraction of the image height) a long legend may grow it to.
+inline constexpr double kMaxCaptionBand = 0.45;
+
 /// A fixed camera that shows `bounds` with `margin` (fraction of the larger side) on every side and
-/// the caption band free above, at the image's aspect ratio; at least `min_width_m` wide so a point
-/// does not blow up.
-Camera fit_camera(const Bounds& bounds, double aspect, double margin = 0.06, double min_width_m = 0.5);
+/// the caption band (`band`, a fraction of the height) free above, at the image's aspect ratio; at least
+/// `min_width_m` wide so a point does not blow up.
+Camera fit_camera(const Bounds& bounds, double aspect, double margin = 0.06, double min_width_m = 0.5,
+                  double band = kCaptionBand);
 
 /// The pixel mapping of a fixed camera for an image size:
 ///   px = W/2 + (x - cx) s,  py = H/2 - (y - cy) s,  s = W / width_m (pixels per metre).

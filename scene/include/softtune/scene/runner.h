@@ -20,6 +20,9 @@ struct RunOptions {
   std::optional<MassModel> mass_model;  ///< overrides the scene's
   bool record_frames = false;           ///< snapshots for a renderer
   int frame_stride = 1;                 ///< record every n-th frame
+  /// Game frames to record instead of every frame_stride-th, ascending (a preview's frames spread over
+  /// the whole run, render/frame_schedule.h); a frame listed twice is recorded twice.
+  std::vector<int> record_at = {};
 };
 
 struct ProbeResult {

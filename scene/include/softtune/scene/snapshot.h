@@ -17,6 +17,13 @@ struct BodySnapshot {
   Eigen::Vector2d center{0, 0};                ///< m, world: circle centre, or the body origin
   double radius = 0.0;                         ///< m, circles
   double angle = 0.0;                          ///< rad
+  Eigen::Vector2d mass_centre{0, 0};           ///< m, world centre of mass (b2Body::GetWorldCenter)
+};
+
+/// One point of a touching contact, as Box2D's testbed draws it (testbed/test.cpp, Test::PreSolve).
+struct ContactSnapshot {
+  Eigen::Vector2d point{0, 0};                 ///< m, world (b2WorldManifold::points)
+  Eigen::Vector2d normal{0, 1};                ///< unit, from body A to body B (b2WorldManifold::normal)
 };
 
 struct JointSnapshot {
@@ -33,6 +40,7 @@ struct Snapshot {
   double time_s = 0.0;                         ///< s
   std::vector<BodySnapshot> bodies;
   std::vector<JointSnapshot> joints;
+  std::vector<ContactSnapshot> contacts;       ///< every point of every touching contact
 };
 
 }  // namespace softtune::scene
