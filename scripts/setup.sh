@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(
   cmake g++ make pkg-config          # build
   libeigen3-dev                      # core math
+  libfmt-dev                         # core and up: messages formatted whole (warnings, field rules)
   nlohmann-json3-dev                 # server: JSON codec
   libgtest-dev libbenchmark-dev      # tests, benchmarks
   libbox2d-dev                       # scene/ and engines/box2d_v2_4: Box2D 2.4
@@ -24,6 +25,7 @@ packages=(
   libwebp-dev libgif-dev             # render: preview clips (WebPAnimEncoder, giflib)
   libfreetype-dev libfontconfig-dev fonts-dejavu-core  # render: anti-aliased preview text (DejaVu Sans)
   libxml2-dev                        # tests/app: the check's JUnit XML validated against its XSD, parsed back
+  dpkg-dev                           # packaging: dpkg-shlibdeps fills the Debian package's Depends (cpack)
 )
 
 missing=()
