@@ -3,6 +3,7 @@
 #   setup        scripts/setup.sh (Debian packages and npm ci; only checks when all is installed)
 #   build        scripts/build.sh: the plain Release build in build/
 #   ctest        every test in build/ (GoogleTest, CLI, the page in Node and headless Chromium)
+#   package      scripts/test-package.sh: the Debian package built, unpacked into a scratch root, run from there
 #   attacks      scripts/test-attacks.sh: the attack suite against a real `softtune serve`
 #   asan-build   scripts/build-asan.sh: clang ASan+UBSan build of the suite and the fuzz harnesses, build-asan/
 #   asan-ctest   every test in build-asan/ under ASan+UBSan (LSan on)
@@ -52,6 +53,7 @@ fi
 stage setup scripts/setup.sh
 stage build scripts/build.sh
 stage ctest ctest --preset dev -j"$(nproc)"
+stage package scripts/test-package.sh
 stage attacks scripts/test-attacks.sh
 stage asan-build scripts/build-asan.sh
 stage asan-ctest scripts/test-sanitizers.sh asan
