@@ -15,6 +15,12 @@
 # unit (CMakePresets.json "quick"; labels: cmake/TestLabels.cmake), no setup.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+quick=0
+case ${1:-} in
+  --quick) quick=1 ;;
+  "") ;;
+  *) echo "usage: scripts/test.sh [--quick]" >&2; exit 2 ;;
+esac
 
 summary=()
 current=""
@@ -34,14 +40,6 @@ stage() {
   "$@"
   summary+=("$(printf '%-10s %5d s   load %s' "$current" $((SECONDS - started)) "$(cut -d' ' -f1-3 /proc/loadavg)")")
 }
-
-
-quick=0
-case ${1:-} in
-  --quick) quick=1 ;;
-  "") ;;
-  *) echo "usage: scripts/test.sh [--quick]" >&2; exit 2 ;;
-esac
 
 started=$SECONDS
 if ((quick)); then
