@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(
   cmake g++ make pkg-config          # build
   libeigen3-dev                      # core math
+  libfmt-dev                         # core and up: messages formatted whole (warnings, field rules)
   nlohmann-json3-dev                 # server: JSON codec
   libgtest-dev libbenchmark-dev      # tests, benchmarks
   libbox2d-dev                       # scene/ and engines/box2d_v2_4: Box2D 2.4
@@ -26,6 +27,7 @@ packages=(
   libxml2-dev                        # tests/app: the check's JUnit XML validated against its XSD, parsed back
   libchipmunk-dev                    # engines/chipmunk, tests/engines/chipmunk: Chipmunk 7.0.3
   godot3-server                      # tests/engines/godot, tests/web: Godot 3.2.3 headless (2-D and 3-D physics, GDScript)
+  dpkg-dev                           # packaging: dpkg-shlibdeps fills the Debian package's Depends (cpack)
 )
 
 missing=()

@@ -3,6 +3,7 @@
 #   setup        scripts/setup.sh (Debian packages and npm ci; only checks when all is installed)
 #   build        scripts/build.sh: the plain Release build in build/
 #   ctest        every test in build/ (GoogleTest, CLI, the page in Node and headless Chromium)
+#   package      scripts/test-package.sh: the Debian package built, unpacked into a scratch root, run from there
 #   attacks      scripts/test-attacks.sh: the attack suite against a real `softtune serve`
 #   asan-build   scripts/build-asan.sh: clang ASan+UBSan build of the suite and the fuzz harnesses, build-asan/
 #   asan-ctest   every test in build-asan/ under ASan+UBSan (LSan on)
@@ -14,6 +15,12 @@
 # unit (CMakePresets.json "quick"; labels: cmake/TestLabels.cmake), no setup.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+quick=0
+case ${1:-} in
+  --quick) quick=1 ;;
+  "") ;;
+  *) echo "usage: scripts/test.sh [--quick]" >&2; exit 2 ;;
+esac
 
 summary=()
 current=""
@@ -34,14 +41,6 @@ stage() {
   summary+=("$(printf '%-10s %5d s   load %s' "$current" $((SECONDS - started)) "$(cut -d' ' -f1-3 /proc/loadavg)")")
 }
 
-
-quick=0
-case ${1:-} in
-  --quick) quick=1 ;;
-  "") ;;
-  *) echo "usage: scripts/test.sh [--quick]" >&2; exit 2 ;;
-esac
-
 started=$SECONDS
 if ((quick)); then
   stage build scripts/build.sh
@@ -52,6 +51,7 @@ fi
 stage setup scripts/setup.sh
 stage build scripts/build.sh
 stage ctest ctest --preset dev -j"$(nproc)"
+stage package scripts/test-package.sh
 stage attacks scripts/test-attacks.sh
 stage asan-build scripts/build-asan.sh
 stage asan-ctest scripts/test-sanitizers.sh asan

@@ -2,29 +2,27 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
-#include <cstdio>
+#include <fmt/format.h>
 
 namespace softtune {
-namespace {
 
-std::string range_rule(double lo, double hi, const char* unit) {
-  char buffer[128];
-  std::snprintf(buffer, sizeof buffer, "must be a finite number in [%g, %g]%s%s", lo, hi, *unit ? " " : "",
-                unit);
-  return buffer;
+std::string finite_range_rule(double lo, double hi, std::string_view unit) {
+  return fmt::format("must be a finite number in [{:g}, {:g}]{}{}", lo, hi, unit.empty() ? "" : " ", unit);
 }
+
+namespace {
 
 // A failed check: the field path and its rule.
 std::optional<FieldError> check_range(double value, double lo, double hi, const std::string& field,
                                       const char* unit) {
   if (std::isfinite(value) && value >= lo && value <= hi) return std::nullopt;
-  return FieldError{field, range_rule(lo, hi, unit)};
+  return FieldError{field, finite_range_rule(lo, hi, unit)};
 }
 
 std::optional<FieldError> check_vector(const double* v, int n, const std::string& field) {
   for (int i = 0; i < n; ++i) {
     if (!std::isfinite(v[i]) || std::abs(v[i]) > limits::kMaxCoordinate) {
-      return FieldError{field, range_rule(-limits::kMaxCoordinate, limits::kMaxCoordinate, "m") +
+      return FieldError{field, finite_range_rule(-limits::kMaxCoordinate, limits::kMaxCoordinate, "m") +
                                    " in every component"};
     }
   }
@@ -60,7 +58,7 @@ std::optional<FieldError> check_body(const Body3D& b, const std::string& path) {
     const Eigen::Vector3d eig = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(i).eigenvalues();
     if (!(eig.minCoeff() >= limits::kMinInertia) || !(eig.maxCoeff() <= limits::kMaxInertia))
       return FieldError{path + ".inertia", "must be positive definite: each principal moment " +
-                                               range_rule(limits::kMinInertia, limits::kMaxInertia, "kg m^2")};
+                                               finite_range_rule(limits::kMinInertia, limits::kMaxInertia, "kg m^2")};
   }
   if (auto e = check_vector(b.position.data(), 3, path + ".position")) return e;
   const Eigen::Vector4d q = b.orientation.coeffs();

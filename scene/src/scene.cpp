@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <set>
 
 #include "softtune/scene/limits.h"
@@ -12,11 +11,7 @@
 namespace softtune::scene {
 namespace {
 
-std::string range(double lo, double hi, const char* unit) {
-  char buffer[128];
-  std::snprintf(buffer, sizeof buffer, "must be a finite number in [%g, %g]%s%s", lo, hi, *unit ? " " : "", unit);
-  return buffer;
-}
+std::string range(double lo, double hi, const char* unit) { return finite_range_rule(lo, hi, unit); }
 
 bool in(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
+#include <fmt/format.h>
 #include <numbers>
 
 #include "app/accuracy_cost.h"
@@ -20,16 +20,6 @@ namespace softtune::app {
 using nlohmann::json;
 using codec::AccuracyRequest;
 using codec::row_label;
-
-namespace {
-
-std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
-  char buffer[256];
-  std::snprintf(buffer, sizeof buffer, fmt, a, b, c);
-  return buffer;
-}
-
-}  // namespace
 
 AccuracyReport run_accuracy_report(const AccuracyRequest& q, const std::optional<EngineRunner>& engine,
                                    const SecondsClock& clock) {
@@ -115,7 +105,7 @@ bool in_response(const AccuracyRow& row, const AccuracyRequest& q) {
 
 Plot response_plot(const AccuracyRequest& q, const AccuracyReport& report) {
   const AccuracySettings& s = q.settings;
-  Plot p{"Response at " + format("%g fps", q.tune.fps) + ": every method against the exact solution",
+  Plot p{"Response at " + fmt::format("{:g} fps", q.tune.fps) + ": every method against the exact solution",
          plot::make_axis("time", "s"), plot::make_axis("position", "m"), {}, {}};
   Series exact{"exact", "m", {}, {}, Style::line, true};
   const int samples = 400;
@@ -147,7 +137,7 @@ Plot response_plot(const AccuracyRequest& q, const AccuracyReport& report) {
 
 Plot error_plot(const AccuracyRequest& q, const AccuracyReport& report) {
   const AccuracySettings& s = q.settings;
-  Plot p{"Error over time at " + format("%g fps", q.tune.fps) + " (|x - exact| / x0; dashed: budget)", plot::make_axis("time", "s"),
+  Plot p{"Error over time at " + fmt::format("{:g} fps", q.tune.fps) + " (|x - exact| / x0; dashed: budget)", plot::make_axis("time", "s"),
          plot::make_axis("position error", "fraction of x0", Scale::log, 1e-8, 1e3), {}, {s.error_budget}};
   for (const AccuracyRow& row : report.rows) {
     if (!in_response(row, q)) continue;

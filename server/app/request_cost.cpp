@@ -1,22 +1,12 @@
 #include "app/request_cost.h"
 
-#include <cstdio>
+#include <fmt/format.h>
 #include <utility>
 
 #include "app/budgets.h"
 #include "codec/problem.h"
 
 namespace softtune::app {
-namespace {
-
-std::string format(const char* fmt, double a, double b) {
-  char buffer[160];
-  std::snprintf(buffer, sizeof buffer, fmt, a, b);
-  return buffer;
-}
-
-}  // namespace
-
 Budget request_budget(std::string instead) {
   return {budgets::kCpuSeconds, budgets::kPeakBytes, "request", std::move(instead)};
 }
@@ -36,8 +26,8 @@ void require_within_budget(const RequestCost& cost, const Budget& budget) {
   std::string names;
   for (const std::string& f : cost.fields) names += (names.empty() ? "" : ", ") + f;
   std::string detail = "the request asks for " + cost.work + ": about ";
-  detail += cpu ? format("%.3g s of CPU time; the budget is %g s per ", cost.cpu_seconds, budget.cpu_seconds)
-                : format("%.3g MiB at its peak; the budget is %g MiB per ", cost.peak_bytes / (1 << 20), budget.peak_bytes / (1 << 20));
+  detail += cpu ? fmt::format("{:.3g} s of CPU time; the budget is {:g} s per ", cost.cpu_seconds, budget.cpu_seconds)
+                : fmt::format("{:.3g} MiB at its peak; the budget is {:g} MiB per ", cost.peak_bytes / (1 << 20), budget.peak_bytes / (1 << 20));
   detail += budget.per;
   detail += names.empty() ? "" : "; the fields driving it: " + names;
   // Only CPU time is larger for a job: a request over the byte budget is over a job's too.

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "softtune/version.h"
 
 namespace {
 
@@ -26,7 +27,8 @@ constexpr Command kCommands[] = {
 };
 
 int usage(std::ostream& out, int code) {
-  out << "usage: softtune COMMAND [options]   (softtune COMMAND --help for each)\n\ncommands:\n";
+  out << "usage: softtune COMMAND [options]   (softtune COMMAND --help for each)\n"
+         "       softtune --version\n\ncommands:\n";
   for (const Command& c : kCommands) out << "  " << c.name << std::string(12 - std::strlen(c.name), ' ') << c.summary << '\n';
   return code;
 }
@@ -37,6 +39,14 @@ int main(int argc, char** argv) {
   if (argc < 2) return usage(std::cerr, 2);
   const std::string name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") return usage(std::cout, 0);
+  if (name == "--version" || name == "-V") {
+    if (argc > 2) {
+      std::cerr << "softtune: --version takes no arguments\n";
+      return 2;
+    }
+    std::cout << "softtune " << softtune::kVersion << '\n';
+    return 0;
+  }
   for (const Command& c : kCommands) {
     if (name == c.name) return c.run(softtune::cli::Args(argv + 2, argv + argc));
   }

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <fmt/format.h>
 #include <numbers>
 #include <set>
 
@@ -20,12 +20,6 @@ namespace softtune::codec {
 using nlohmann::json;
 
 namespace {
-
-std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
-  char buffer[256];
-  std::snprintf(buffer, sizeof buffer, fmt, a, b, c);
-  return buffer;
-}
 
 // Every fps to run: the step rates plus the request's own, ascending, once each.
 std::vector<double> frame_rates(const std::vector<double>& step_rates, double request_fps) {
@@ -65,14 +59,14 @@ AccuracyRequest decode_accuracy_request(const json& doc) {
 
   if (auto b = r.number("error_budget")) {
     if (!(*b >= limits::kMinErrorBudget && *b <= limits::kMaxErrorBudget)) {
-      throw invalid_field("error_budget", format("must be a number in [%g, %g] (fraction of the amplitude; 0.05 = 5 %%)",
+      throw invalid_field("error_budget", fmt::format("must be a number in [{:g}, {:g}] (fraction of the amplitude; 0.05 = 5 %)",
                                                  limits::kMinErrorBudget, limits::kMaxErrorBudget));
     }
     s.error_budget = *b;
   }
   if (auto n = r.integer("timing_repeats")) {
     if (*n < 1 || *n > limits::kMaxTimingRepeats) {
-      throw invalid_field("timing_repeats", format("must be an integer in [1, %g]", limits::kMaxTimingRepeats));
+      throw invalid_field("timing_repeats", fmt::format("must be an integer in [1, {}]", limits::kMaxTimingRepeats));
     }
     s.timing_repeats = static_cast<int>(*n);
   }
@@ -90,7 +84,7 @@ AccuracyRequest decode_accuracy_request(const json& doc) {
                          : limits::kDefaultDurationNoSpringS;
   if (auto d = r.number("duration_s")) {
     if (!(*d > 0.0) || *d < min_duration * (1.0 - 1e-12)) {
-      throw invalid_field("duration_s", format("must be at least %g periods of %g Hz (%g s)", limits::kMinPeriods, f,
+      throw invalid_field("duration_s", fmt::format("must be at least {:g} periods of {:g} Hz ({:g} s)", limits::kMinPeriods, f,
                                                min_duration));
     }
     s.duration_s = *d;
@@ -104,8 +98,8 @@ AccuracyRequest decode_accuracy_request(const json& doc) {
                         : max_rate == q.tune.fps ? "fps"
                         : rates ? "step_rates"
                                 : "frequency_hz";
-    throw invalid_field(field, format("the longest row would take %g steps (fps * substeps * duration_s); the limit is "
-                                      "%g: shorten duration_s, ask a higher frequency or lower the step rates or "
+    throw invalid_field(field, fmt::format("the longest row would take {:g} steps (fps * substeps * duration_s); the limit is "
+                                      "{:g}: shorten duration_s, ask a higher frequency or lower the step rates or "
                                       "soft_substeps",
                                       steps, limits::kMaxAccuracyStepsPerRow));
   }
@@ -135,10 +129,10 @@ json row_json(const AccuracyRow& row) {
   };
 }
 
-std::string percent(double v) { return format("%.3g %%", 100.0 * v); }
+std::string percent(double v) { return fmt::format("{:.3g} %", 100.0 * v); }
 
 std::string config_text(const AccuracyRow& row) {
-  return row.method + format(" at %g fps", row.fps) +
+  return row.method + fmt::format(" at {:g} fps", row.fps) +
          (row.substeps > 1 ? " with " + std::to_string(row.substeps) + " substeps" : std::string());
 }
 
@@ -170,8 +164,8 @@ json recommendation_json(const std::vector<AccuracyRow>& rows, const Recommendat
   out["reason"] = config_text(row) + " keeps the position error within " + percent(*row.max_error) +
                   " of the amplitude (budget " + percent(rec.error_budget) + ") and is the cheapest of the " +
                   std::to_string(rec.rows_meeting_budget) + " configurations that meet the budget (" +
-                  format("%.3g", row.cpu_seconds_per_sim_second) +
-                  " CPU s per simulated s; costs within " + format("%.0f %%", 100.0 * (rec.cost_tie_factor - 1.0)) +
+                  fmt::format("{:.3g}", row.cpu_seconds_per_sim_second) +
+                  " CPU s per simulated s; costs within " + fmt::format("{:.0f} %", 100.0 * (rec.cost_tie_factor - 1.0)) +
                   " of the cheapest count as equal, and the more accurate one wins)";
   return out;
 }

@@ -12,13 +12,14 @@
 #include "http/openapi.h"
 #include "http/preview_routes.h"
 #include "http/static_files.h"
+#include "softtune/version.h"
 
 namespace softtune::http {
 namespace {
 
 HttpResponse health(const HttpRequest&, Service& service) {
   return json_response({{"status", "ok"}, {"service", "softtune"}, {"api", "v1"},
-                        {"uptime_seconds", service.uptime_seconds()}});
+                        {"version", std::string(kVersion)}, {"uptime_seconds", service.uptime_seconds()}});
 }
 
 // The embedded document: the bytes of server/http/openapi.json, the same ones the tests read.

@@ -7,7 +7,8 @@
 #    spans are not links. Absolute URLs (http:, https:, mailto:) are not checked. Links to the engine pages
 #    (docs/engines/<engine>.md) are required like any other: the pages land with the engine rooms.
 # 3. Every .md file the sources, scripts, tests and pages cite by name (`docs/math.md`, "see testing.md")
-#    exists: relative to the repository root, to docs/, or to the citing file's folder. A comment citing a
+#    exists: relative to the repository root, to docs/, or to the citing file's folder (or a tail of the
+#    name does, after a prefix such as an install path). A comment citing a
 #    document outside the repository fails here (docs/conventions.md, "Docs beside the code").
 cmake_minimum_required(VERSION 3.25)
 if(NOT SOURCE_DIR)
@@ -115,7 +116,19 @@ foreach(source IN LISTS all_sources)
   foreach(name IN LISTS names)
     string(REGEX REPLACE "[^A-Za-z0-9_]$" "" name "${name}")
     math(EXPR cited "${cited} + 1")
-    if(NOT EXISTS "${SOURCE_DIR}/${name}" AND NOT EXISTS "${SOURCE_DIR}/docs/${name}" AND NOT EXISTS "${source_dir}/${name}")
+    # The name, or a tail of it after a prefix (an install path such as usr/share/doc/softtune/README.md).
+    set(tail "${name}")
+    set(found FALSE)
+    while(NOT found AND NOT tail STREQUAL "")
+      if(EXISTS "${SOURCE_DIR}/${tail}" OR EXISTS "${SOURCE_DIR}/docs/${tail}" OR EXISTS "${source_dir}/${tail}")
+        set(found TRUE)
+      elseif(tail MATCHES "/")
+        string(REGEX REPLACE "^[^/]*/" "" tail "${tail}")
+      else()
+        set(tail "")
+      endif()
+    endwhile()
+    if(NOT found)
       list(APPEND failures "${source_name} cites ${name}, which is not in the repository")
     endif()
   endforeach()

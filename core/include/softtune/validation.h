@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "softtune/diagnostics.h"
 #include "softtune/tune.h"
@@ -25,5 +26,9 @@ namespace softtune {
 
 /// Checks every range and the exactly-one-of pairs; the first violation, or nothing.
 std::optional<FieldError> validate_tune_request(const TuneRequest& request);
+
+/// The rule a FieldError states for a number outside [lo, hi]: "must be a finite number in [lo, hi] unit"
+/// (the bounds as %g prints them; no unit, no trailing space). The scene checks state theirs the same way.
+std::string finite_range_rule(double lo, double hi, std::string_view unit);
 
 }  // namespace softtune
