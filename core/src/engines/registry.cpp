@@ -10,6 +10,8 @@
 #include "softtune/engines/physx.h"
 #include "softtune/engines/jolt.h"
 #include "softtune/engines/rapier.h"
+#include "softtune/engines/matter_js.h"
+#include "softtune/engines/planck_js.h"
 
 namespace softtune::engines {
 
@@ -17,6 +19,7 @@ std::span<const EngineModel* const> engine_models() {
   static constexpr std::array kModels = {
       &kBox2DV24Model, &kBox2DV3Model, &kJoltModel, &kMujocoModel,
       &kOdeModel,      &kBulletModel,  &kPhysxModel, &kRapierModel,
+      &kMatterJsModel, &kPlanckJsModel,
   };
   return kModels;
 }

@@ -27,18 +27,24 @@ function overDamped(frequencyHz, zeta, dt) {
 
 // Measures a trajectory against a response (f, zeta): {frequency (relative), damping (absolute)} for a
 // fittable pair of poles, {slowRate (relative)} where the fast pole is unobservable, or null.
-function measureAgainst(x, dt, frequencyHz, zeta, floor) {
+function measureAgainst(x, dt, frequencyHz, zeta, floor, fit = fitResponse) {
   const od = overDamped(frequencyHz, zeta, dt);
   if (od && od.fast < kUnobservablePole) {
     const slow = fitSlowPole(x, dt, 2, floor);
     return slow && { slowRate: slow.rate / od.slowRate - 1 };
   }
-  const fit = fitResponse(x, dt, floor);
-  return fit && { frequency: fit.frequencyHz / frequencyHz - 1, damping: fit.dampingRatio - zeta,
-                  measured: `${fit.frequencyHz} Hz zeta ${fit.dampingRatio}` };
+  const fitted = fit(x, dt, floor);
+  return fitted && { frequency: fitted.frequencyHz / frequencyHz - 1, damping: fitted.dampingRatio - zeta,
+                     measured: `${fitted.frequencyHz} Hz zeta ${fitted.dampingRatio}` };
+}
+
+/** A run predicted to grow is held to that: it leaves 10 x0 (or the engine's numbers overflow). */
+function blowsUp(x) {
+  return x.some((v) => !(Math.abs(v) <= 10 * Math.abs(x[0])));
 }
 
 function within(m) {
+  if (m.blowsUp !== undefined) return m.blowsUp;
   if (m.deadBeat !== undefined) return m.deadBeat;
   if (m.slowRate !== undefined) return Math.abs(m.slowRate) <= kFrequencyTolerance;
   return Math.abs(m.frequency) <= kFrequencyTolerance && Math.abs(m.damping) <= kDampingTolerance;
@@ -110,8 +116,11 @@ function hasWarning(report, code) {
 /**
  * Runs every case through `run(caseObject, report, parameters, dt, steps)` (returns the trajectory) and
  * returns {rows, failures, table}. A row per case: what was measured for the plain export and for exact.
+ * `fit(c)` gives the fit for a case's trajectories (x, dt, floor) -> {frequencyHz, dampingRatio} or null:
+ * prony.mjs's second-order fitResponse unless the engine's motion is of higher order.
  */
-export function conform(engineName, cases, run, { maxSteps = 3000, fitFloor = () => kEngineFitFloor } = {}) {
+export function conform(engineName, cases, run,
+                        { maxSteps = 3000, fitFloor = () => kEngineFitFloor, fit = () => fitResponse } = {}) {
   const rows = [];
   const failures = [];
   for (const c of cases) {
@@ -123,14 +132,17 @@ export function conform(engineName, cases, run, { maxSteps = 3000, fitFloor = ()
     const row = { case: c, report };
     const label = `${engineName} #${c.index} ${JSON.stringify(c.request)} ${c.label ?? ''}`;
     // The plain export, against the model's prediction.
-    if (report.predicted.frequency_hz === null) {
+    if (report.predicted.frequency_hz === null && report.predicted.stable !== false) {
       if (!hasWarning(report, 'engine_refuses')) failures.push(`${label}: no prediction and no engine_refuses`);
       row.refused = true;
     } else {
       const x = run(c, report, report.parameters, dt, steps);
-      const m = report.predicted.spectral_radius < kDeadBeat
+      // A growth the run shows (1000 times over its steps) is held to blowing up; a slower one is fitted.
+      const grows = report.predicted.stable === false && !(report.predicted.spectral_radius ** steps <= 1e3);
+      const m = grows ? { blowsUp: blowsUp(x) }
+        : report.predicted.spectral_radius < kDeadBeat
         ? { deadBeat: deadBeatHolds(x, report.predicted.spectral_radius) }
-        : measureAgainst(x, dt, report.predicted.frequency_hz, report.predicted.damping_ratio, fitFloor(c));
+        : measureAgainst(x, dt, report.predicted.frequency_hz, report.predicted.damping_ratio, fitFloor(c), fit(c));
       if (!m) failures.push(`${label}: the plain run could not be fitted`);
       else {
         row.plain = m;
@@ -148,7 +160,7 @@ export function conform(engineName, cases, run, { maxSteps = 3000, fitFloor = ()
       const x = run(c, report, report.exact, dt, steps);
       const m = report.exact_predicted.spectral_radius < kDeadBeat
         ? { deadBeat: deadBeatHolds(x, report.exact_predicted.spectral_radius) }
-        : measureAgainst(x, dt, c.request.frequency_hz, c.request.damping_ratio, fitFloor(c));
+        : measureAgainst(x, dt, c.request.frequency_hz, c.request.damping_ratio, fitFloor(c), fit(c));
       if (!m) failures.push(`${label}: the exact run could not be fitted`);
       else {
         row.exact = m;
@@ -169,7 +181,7 @@ function worst(values) {
 
 /** The conformance table: cases, runs, and the worst errors against predicted and, for exact, the request. */
 export function table(engineName, rows) {
-  const fitted = (m) => m && m.slowRate === undefined && m.deadBeat === undefined;
+  const fitted = (m) => m && m.slowRate === undefined && m.deadBeat === undefined && m.blowsUp === undefined;
   const plain = rows.filter((r) => fitted(r.plain)).map((r) => r.plain);
   const exact = rows.filter((r) => fitted(r.exact)).map((r) => r.exact);
   const deadBeat = rows.filter((r) => r.plain?.deadBeat !== undefined).length +
@@ -187,5 +199,6 @@ export function table(engineName, rows) {
     `  over-damped, fast pole < ${kUnobservablePole} per step (slow pole only): ${slowPlain.length} plain runs, worst ` +
       `slow rate ${fmt(worst(slowPlain))}; ${slowExact.length} exact runs, worst slow rate ${fmt(worst(slowExact))}`,
     `  dead-beat (every pole < ${kDeadBeat} per step, held to the spectral radius): ${deadBeat} runs`,
+    `  predicted unstable (held to blowing up): ${rows.filter((r) => r.plain?.blowsUp !== undefined).length} plain runs`,
   ].join('\n');
 }
