@@ -1,6 +1,6 @@
 // Each engine's answer as a user types it: a snippet in that engine's own syntax (C for Box2D, C++ for Jolt,
 // Bullet and PhysX, MJCF XML for MuJoCo, Rust for Rapier, C for ODE and Chipmunk, GDScript and .tscn lines for
-// Godot) built from the tune answer's
+// Godot, JavaScript for matter.js and planck.js) built from the tune answer's
 // engines.<name>.parameters or .exact and .settings, and the verdict of its predicted response against the
 // request. Pure functions, no DOM: web/engine_table.js draws them, tests/web/engines.test.mjs checks them.
 //
@@ -269,6 +269,44 @@ export const ENGINE_SYNTAX = {
         ...(isNumber(h) ? [`Engine.iterations_per_second = ${Math.round(1 / h)}  # physics steps per second: one step of h`] : []),
         ...tscnLines('Generic6DOFJoint', [['linear_limit_x/enabled', 'false'], ['linear_spring_x/enabled', 'true'],
           ['linear_spring_x/stiffness', w.slot('stiffness')], ['linear_spring_x/damping', w.slot('damping')]]),
+      ];
+    },
+  },
+  matter_js: {
+    label: 'matter.js', language: 'JavaScript', comment: slashes, literal: String,
+    fields: {
+      'Constraint.stiffness': { slot: 'stiffness' },
+      'Constraint.damping': { slot: 'damping' },
+    },
+    // A runnable script given Matter, the body and its anchor: the engine, the body's air friction, the
+    // constraint and one update of 1000 h ms.
+    code(w, settings, h) {
+      return [
+        `const engine = Matter.Engine.create({ constraintIterations: ${isNumber(settings.constraintIterations) ? settings.constraintIterations : 2} });`,
+        ...(isNumber(settings.frictionAir) ? [`body.frictionAir = ${settings.frictionAir};  // Body.frictionAir of the constrained body`] : []),
+        w.line(['stiffness', 'damping'], (k, c) =>
+          `const spring = Matter.Constraint.create({ pointA, bodyB: body, pointB, length, stiffness: ${k}, damping: ${c} });`),
+        'Matter.Composite.add(engine.world, [body, spring]);',
+        ...(isNumber(h) ? [`Matter.Engine.update(engine, ${1000 * h});  // delta in ms, every step`] : []),
+      ];
+    },
+  },
+  planck_js: {
+    label: 'planck.js', language: 'JavaScript', comment: slashes, literal: String,
+    fields: Object.fromEntries(['DistanceJointDef', 'WheelJointDef', 'MouseJointDef'].flatMap((def) => [
+      [`${def}.frequencyHz`, { slot: 'frequencyHz', unit: 'Hz' }],
+      [`${def}.dampingRatio`, { slot: 'dampingRatio' }],
+    ]).concat([['MouseJointDef.maxForce', { slot: 'maxForce', unit: 'N' }]])),
+    // A runnable script given planck, world, ground, body and the joint's anchors (or the mouse's target):
+    // the joint with the answer's numbers, and one world step.
+    code(w, settings, h) {
+      const joint = settings.joint === 'wheel' ? 'WheelJoint' : settings.joint === 'mouse' ? 'MouseJoint' : 'DistanceJoint';
+      const tail = { DistanceJoint: 'ground, body, anchorA, anchorB', WheelJoint: 'ground, body, anchorA, axis', MouseJoint: 'ground, body, target' }[joint];
+      const extra = joint === 'DistanceJoint' ? ', length' : joint === 'WheelJoint' ? ', enableMotor: false' : w.has('maxForce') ? `, maxForce: ${w.slot('maxForce') ?? 0}` : '';
+      return [
+        w.line(['frequencyHz', 'dampingRatio'], (f, z) =>
+          `const joint = world.createJoint(new planck.${joint}({ frequencyHz: ${f}, dampingRatio: ${z}${extra} }, ${tail}));`),
+        ...(isNumber(h) ? [`world.step(${h}, ${isNumber(settings.velocityIterations) ? settings.velocityIterations : 8}, 3);  // dt, velocityIterations, positionIterations`] : []),
       ];
     },
   },

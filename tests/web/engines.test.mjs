@@ -311,3 +311,66 @@ test('literals and short names', () => {
   assert.equal(formatDifference(-0.1476), '−0.148');
   assert.equal(formatDifference(null), '—');
 });
+
+test('matter.js (JavaScript): the snippet runs under node in the real matter-js with the answer\'s numbers', async () => {
+  const { default: Matter } = await import('matter-js');
+  const report = {
+    settings: { anchorLeverage: 0, constraintIterations: 4, frictionAir: 0 },
+    parameters: { 'Constraint.damping': 0.05235987755982988, 'Constraint.stiffness': 0.02741556778080377 },
+    predicted: ok(7.1, 0.41),
+    exact: { 'Constraint.damping': 0.011437212003245196, 'Constraint.stiffness': 0.005925818553396128 },
+    exact_predicted: ok(5.000000000000002, 0.4999999999999998),
+  };
+  const text = snippet('matter_js', report, 'exact');
+  assert.equal(text, [
+    '// matter.js (JavaScript), exact values: predicted 5 Hz, damping ratio 0.5',
+    'const engine = Matter.Engine.create({ constraintIterations: 4 });',
+    'body.frictionAir = 0;  // Body.frictionAir of the constrained body',
+    'const spring = Matter.Constraint.create({ pointA, bodyB: body, pointB, length, stiffness: 0.005925818553396128, damping: 0.011437212003245196 });',
+    'Matter.Composite.add(engine.world, [body, spring]);',
+    'Matter.Engine.update(engine, 16.666666666666668);  // delta in ms, every step',
+  ].join('\n'));
+  // Run as written, on a body 1 past a length-1 constraint: the engine holds the answer's numbers and moves.
+  const body = Matter.Bodies.circle(2, 0, 0.1);
+  const run = new Function('Matter', 'body', 'pointA', 'pointB', 'length', `${text}\nreturn { engine, spring };`);
+  const { engine, spring } = run(Matter, body, { x: 0, y: 0 }, { x: 0, y: 0 }, 1);
+  assert.equal(engine.constraintIterations, 4);
+  assert.equal(body.frictionAir, 0);
+  assert.equal(spring.stiffness, report.exact['Constraint.stiffness']);
+  assert.equal(spring.damping, report.exact['Constraint.damping']);
+  assert.ok(body.position.x < 2 && body.position.x > 1);
+  // A null stiffness is a comment, and the rest still runs.
+  const missing = snippet('matter_js', { ...report, exact: { 'Constraint.stiffness': null, 'Constraint.damping': 0.1 } }, 'exact');
+  assert.match(missing, /^\/\/ Constraint\.stiffness: no value \(null in the answer: the engine cannot represent it\)$/m);
+  assert.doesNotMatch(missing, /Constraint\.create/);
+});
+
+test('planck.js (JavaScript): the snippet runs under node in the real planck with the answer\'s numbers', async () => {
+  const { default: planck } = await import('planck');
+  const report = {
+    settings: { joint: 'distance', rotationShare: 0, velocityIterations: 8 },
+    parameters: { 'DistanceJointDef.dampingRatio': 0.1, 'DistanceJointDef.frequencyHz': 10 },
+    predicted: ok(8.25, 0.484),
+    exact: { 'DistanceJointDef.dampingRatio': -0.4168998473405207, 'DistanceJointDef.frequencyHz': 10.072180089047493 },
+    exact_predicted: ok(10.000000000000002, 0.10000000000000003),
+  };
+  const text = snippet('planck_js', report, 'exact');
+  assert.equal(text, [
+    '// planck.js (JavaScript), exact values: predicted 10 Hz, damping ratio 0.1',
+    'const joint = world.createJoint(new planck.DistanceJoint({ frequencyHz: 10.072180089047492, dampingRatio: -0.4168998473405207, length }, ground, body, anchorA, anchorB));',
+    'world.step(0.016666666666666666, 8, 3);  // dt, velocityIterations, positionIterations',
+  ].join('\n'));
+  const world = new planck.World({ gravity: planck.Vec2(0, 0) });
+  const ground = world.createBody();
+  const body = world.createDynamicBody({ position: planck.Vec2(1.05, 0), fixedRotation: true });
+  body.setMassData({ mass: 1, center: planck.Vec2(0, 0), I: 0 });
+  const run = new Function('planck', 'world', 'ground', 'body', 'anchorA', 'anchorB', 'length', `${text}\nreturn joint;`);
+  const joint = run(planck, world, ground, body, planck.Vec2(0, 0), planck.Vec2(1.05, 0), 1);
+  assert.equal(joint.getFrequency(), report.exact['DistanceJointDef.frequencyHz']);
+  assert.equal(joint.getDampingRatio(), report.exact['DistanceJointDef.dampingRatio']);
+  assert.ok(body.getPosition().x < 1.05);
+  // The mouse joint carries maxForce.
+  const mouse = snippet('planck_js', { ...report, settings: { joint: 'mouse', velocityIterations: 8 },
+    parameters: { 'MouseJointDef.dampingRatio': 0.1, 'MouseJointDef.frequencyHz': 10, 'MouseJointDef.maxForce': 1e15 } }, 'plain');
+  assert.match(mouse, /new planck\.MouseJoint\(\{ frequencyHz: 10, dampingRatio: 0\.1, maxForce: 1000000000000000 \}, ground, body, target\)/);
+});

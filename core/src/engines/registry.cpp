@@ -12,6 +12,8 @@
 #include "softtune/engines/rapier.h"
 #include "softtune/engines/chipmunk.h"
 #include "softtune/engines/godot_2d.h"
+#include "softtune/engines/matter_js.h"
+#include "softtune/engines/planck_js.h"
 
 namespace softtune::engines {
 
@@ -20,6 +22,7 @@ std::span<const EngineModel* const> engine_models() {
       &kBox2DV24Model, &kBox2DV3Model, &kJoltModel, &kMujocoModel,
       &kOdeModel,      &kBulletModel,  &kPhysxModel, &kRapierModel,
       &kChipmunkModel, &kGodot2DModel,
+      &kMatterJsModel, &kPlanckJsModel,
   };
   return kModels;
 }

@@ -35,7 +35,8 @@ TEST(EngineRegistry, TheEightEnginesOnceEachUnderSnakeCaseNames) {
     for (char c : name) EXPECT_TRUE(std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_') << name;
     EXPECT_NE(m->report, nullptr) << name;
   }
-  for (const char* engine : {"box2d_v2_4", "box2d_v3", "jolt", "mujoco", "ode", "bullet", "physx", "rapier"}) {
+  for (const char* engine : {"box2d_v2_4", "box2d_v3", "jolt", "mujoco", "ode", "bullet", "physx", "rapier", "matter_js",
+                             "planck_js"}) {
     EXPECT_TRUE(names.contains(engine)) << engine;
   }
 }

@@ -27,16 +27,17 @@ function overDamped(frequencyHz, zeta, dt) {
 
 // Measures a trajectory against a response (f, zeta): {frequency (relative), damping (absolute)} for a
 // fittable pair of poles, {slowRate (relative)} where the fast pole is unobservable, or null.
-function measureAgainst(x, dt, frequencyHz, zeta, floor) {
+function measureAgainst(x, dt, frequencyHz, zeta, floor, fit = fitResponse) {
   const od = overDamped(frequencyHz, zeta, dt);
   if (od && od.fast < kUnobservablePole) {
     const slow = fitSlowPole(x, dt, 2, floor);
     return slow && { slowRate: slow.rate / od.slowRate - 1 };
   }
-  const fit = fitResponse(x, dt, floor);
-  return fit && { frequency: fit.frequencyHz / frequencyHz - 1, damping: fit.dampingRatio - zeta,
-                  measured: `${fit.frequencyHz} Hz zeta ${fit.dampingRatio}` };
+  const fitted = fit(x, dt, floor);
+  return fitted && { frequency: fitted.frequencyHz / frequencyHz - 1, damping: fitted.dampingRatio - zeta,
+                     measured: `${fitted.frequencyHz} Hz zeta ${fitted.dampingRatio}` };
 }
+
 
 /**
  * A refused plain export (engine_refuses) is still run: its `predicted` is what the engine does with it. With
@@ -59,7 +60,7 @@ function measureUnpredictable(x, p) {
   return { lost: grew(x) };
 }
 
-function measureGrowing(x, dt, p, floor) {
+function measureGrowing(x, dt, p, floor, fitter = fitResponse) {
   // The envelope grows by the spectral radius per step: where that stays below 2 kGrown over the run (a
   // slow growth), the run need not leave kGrown x0, and the fit holds it instead.
   const visible = p.spectral_radius ** (x.length - 1) >= 2 * kGrown;
@@ -68,7 +69,7 @@ function measureGrowing(x, dt, p, floor) {
   if (end < 0) end = x.length;
   if (end >= kMinGrowthSamples) {
     // The window grows to its end: the fit's floor, measured from the last sample, never cuts it.
-    const fit = fitResponse(x.slice(0, end), dt, floor);
+    const fit = fitter(x.slice(0, end), dt, floor);
     if (fit) {
       out.frequency = fit.frequencyHz / p.frequency_hz - 1;
       out.damping = fit.dampingRatio - p.damping_ratio;
@@ -197,8 +198,11 @@ function hasWarning(report, code) {
 /**
  * Runs every case through `run(caseObject, report, parameters, dt, steps)` (returns the trajectory) and
  * returns {rows, failures, table}. A row per case: what was measured for the plain export and for exact.
+ * `fit(c)` gives the fit for a case's trajectories (x, dt, floor) -> {frequencyHz, dampingRatio} or null:
+ * prony.mjs's second-order fitResponse unless the engine's motion is of higher order.
  */
-export function conform(engineName, cases, run, { maxSteps = 3000, fitFloor = () => kEngineFitFloor } = {}) {
+export function conform(engineName, cases, run,
+                        { maxSteps = 3000, fitFloor = () => kEngineFitFloor, fit = () => fitResponse } = {}) {
   const rows = [];
   const failures = [];
   for (const c of cases) {
@@ -218,9 +222,9 @@ export function conform(engineName, cases, run, { maxSteps = 3000, fitFloor = ()
       const x = run(c, report, report.parameters, dt, steps);
       let m;
       if (p.frequency_hz === null) m = measureUnpredictable(x, p);
-      else if (!p.stable) m = measureGrowing(x, dt, p, fitFloor(c));
+      else if (!p.stable) m = measureGrowing(x, dt, p, fitFloor(c), fit(c));
       else if (p.spectral_radius < kDeadBeat) m = { deadBeat: deadBeatHolds(x, p.spectral_radius) };
-      else m = measureAgainst(x, dt, p.frequency_hz, p.damping_ratio, fitFloor(c));
+      else m = measureAgainst(x, dt, p.frequency_hz, p.damping_ratio, fitFloor(c), fit(c));
       if (!m) failures.push(`${label}: the plain run could not be fitted`);
       else {
         row.plain = m;
@@ -298,5 +302,6 @@ export function table(engineName, rows) {
     `  over-damped, fast pole < ${kUnobservablePole} per step (slow pole only): ${slowPlain.length} plain runs, worst ` +
       `slow rate ${fmt(worst(slowPlain))}; ${slowExact.length} exact runs, worst slow rate ${fmt(worst(slowExact))}`,
     `  dead-beat (every pole < ${kDeadBeat} per step, held to the spectral radius): ${deadBeat} runs`,
+    `  predicted unstable, not refused (held to growing): ${rows.filter((r) => !r.refused && r.plain?.grows !== undefined).length} plain runs`,
   ].join('\n');
 }

@@ -11,7 +11,7 @@
 export const kFitFloor = 1e-3;
 const kMinSamples = 8;
 
-function fitWindow(x, floor) {
+export function fitWindow(x, floor) {
   const last = x[x.length - 1];
   let largest = 0;
   for (const v of x) largest = Math.max(largest, Math.abs(v - last));
