@@ -20,13 +20,13 @@ namespace {
 
 using testing::target;
 
-struct Body {
+struct GodotBody {
   double x, v;
 };
 
 // Step2DSW::step, one body of mass m (inverse mass = k_scalar on the axis) on a DampedSpringJoint2D of rest
 // length 0 to a static anchor.
-Body godot_step(Body b, double m, double stiffness, double damping, double h, double linear_damp, int iterations) {
+GodotBody godot_step(GodotBody b, double m, double stiffness, double damping, double h, double linear_damp, int iterations) {
   // Body2DSW::integrate_forces
   double damp = 1.0 - h * linear_damp;
   if (damp < 0) damp = 0;
@@ -53,8 +53,8 @@ TEST(Godot2DModel, StepMapIsStep2DSWOnOneDampedSpring) {
   for (double damping : {0.0, 0.7, 9.0}) {
     for (double linear_damp : {0.0, 0.1, 5.0}) {
       const Eigen::Matrix2d a = godot_2d_step_map(m, k, damping, h, linear_damp);
-      for (Body b0 : {Body{1.0, 0.0}, Body{0.0, 1.0}, Body{0.3, -2.0}}) {
-        const Body b1 = godot_step(b0, m, k, damping, h, linear_damp, kGodot2DIterations);
+      for (GodotBody b0 : {GodotBody{1.0, 0.0}, GodotBody{0.0, 1.0}, GodotBody{0.3, -2.0}}) {
+        const GodotBody b1 = godot_step(b0, m, k, damping, h, linear_damp, kGodot2DIterations);
         EXPECT_NEAR(a(0, 0) * b0.x + a(0, 1) * b0.v, b1.x, 1e-12);
         EXPECT_NEAR(a(1, 0) * b0.x + a(1, 1) * b0.v, b1.v, 1e-12);
       }
@@ -67,7 +67,7 @@ TEST(Godot2DModel, EveryOtherSolvePassDrags) {
   const double m = 1.0, h = 1.0 / 60.0, damping = 3.0;
   const double kept = std::exp(-damping * h / m);
   for (int n : {1, 2, 3, 8}) {
-    const Body b = godot_step({0.0, 1.0}, m, 0.0, damping, h, 0.0, n);
+    const GodotBody b = godot_step({0.0, 1.0}, m, 0.0, damping, h, 0.0, n);
     EXPECT_NEAR(b.v, std::pow(kept, (n + 1) / 2), 1e-14) << n;
   }
   EXPECT_EQ(kGodot2DDragPasses, 4);
