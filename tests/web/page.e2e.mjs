@@ -931,3 +931,31 @@ test('one timeline: frame step, slow motion, and a drag on a plot moves the prev
   await page.close();
   assert.deepEqual(consoleErrors, [], 'no console errors');
 });
+
+test('a preset tuned by its modes: the summary shows the scene\'s solve once, marked pending before, never the tune\'s k', async (t) => {
+  if (!(await serves(t, 'POST /api/v1/simulate'))) return;
+  const page = await openPage(`${base}?preset=vehicle`, { width: 1440, height: 900 });
+  await page.waitForFunction(() => !document.getElementById('modal-group').hidden && !document.getElementById('summary').dataset.pending, null, { timeout: 30000 });
+  const before = await page.getByTestId('summary-k').textContent();
+  // Every text the bar's k takes, and whether it was marked pending then.
+  await page.evaluate(() => {
+    window.__k = [];
+    const el = document.querySelector('[data-testid="summary-k"]');
+    new MutationObserver(() => window.__k.push([el.textContent, el.classList.contains('pending')]))
+      .observe(el, { childList: true, characterData: true, subtree: true, attributes: true, attributeFilter: ['class'] });
+  });
+  await setControl(page, '#frames', '25');
+  await settled(page);
+  await page.waitForFunction(() => !document.getElementById('summary').dataset.pending, null, { timeout: 30000 });
+  const seen = await page.evaluate(() => window.__k);
+  const tuneK = await page.getByTestId('k').textContent();  // the joint alone, on its own mass
+  const solved = await page.getByTestId('summary-k').textContent();
+  assert.notEqual(solved, tuneK, 'the bar shows the mode\'s solve, not one spring');
+  assert.notEqual(solved, before, 'a new solve for 25 frames');
+  assert.ok(!seen.some(([text]) => text === tuneK), `the tune's k ${tuneK} never showed: ${JSON.stringify(seen)}`);
+  // Before the solve: the last solved value, marked pending; then the new one, once.
+  assert.ok(seen.every(([text, pending]) => (pending ? text === before : text === solved)), JSON.stringify(seen));
+  assert.ok(seen.some(([, pending]) => pending), 'marked pending while the scene solved');
+  await page.close();
+  assert.deepEqual(consoleErrors, [], 'no console errors');
+});
