@@ -812,9 +812,12 @@ test('desktop: the sliders lead the controls, the engine table fits its column w
   // Designer words first: how fast it settles, how much it bounces; the soft constraint's terms behind "details".
   assert.match(await page.getByTestId('live-words').textContent(), /^(no bounce|bounces \d+ %), (settles in \d+ frames|still moving after three periods)$/);
   for (const id of ['gamma', 'beta', 'erp', 'cfm']) assert.equal(await page.getByTestId(id).isVisible(), false, `${id} is behind details`);
+  assert.equal(await page.locator('#accuracy-note').isVisible(), false, 'the work-precision recommendation ("implicit_euler at 240 fps") too');
   // What to type in your engine: one tap from the first view.
+  const entries = await page.evaluate(() => history.length);
   await page.getByTestId('jump-engines').click();
-  await page.waitForFunction(() => { const r = document.getElementById('engines-h').getBoundingClientRect(); return r.top >= 0 && r.top < innerHeight; });
+  await page.waitForFunction(() => { const r = document.getElementById('engines-h').getBoundingClientRect(); return r.top > -2 && r.top < innerHeight; });
+  assert.equal(await page.evaluate(() => history.length), entries, 'the jump adds no history entry');
   await page.locator('#technical-numbers summary').click();
   assert.equal(await page.getByTestId('erp').isVisible(), true);
   // The verdict: the 12-frame soft constraint at 60 fps runs slow, past 3 %: "off by N %" in amber;
