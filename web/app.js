@@ -391,6 +391,12 @@ function describeTuning(state) {
   return `${state.preset || 'custom'}, ${state.frames} frames, ${feel}, ${state.mode}`;
 }
 
+// The jump to the engine table scrolls there without a fragment: no history entry, no popstate.
+$('live').querySelector('.jump').addEventListener('click', (e) => {
+  e.preventDefault();
+  $('engines-h').scrollIntoView({ block: 'start' });
+});
+
 $('ab-side').addEventListener('change', (e) => {
   document.querySelector('main').dataset.abLayout = e.target.checked ? 'side' : 'ghost';
 });

@@ -762,13 +762,30 @@ test('phone: the live curve and the summary stay in view while a slider is dragg
   // Scroll the slider to the middle of the screen, as a designer reaching it would, then drag it.
   await page.locator('#frames').evaluate((el) => el.scrollIntoView({ block: 'center' }));
   const drawn = Number(await page.getByTestId('live-curve').getAttribute('data-drawn'));
+  // Tune answers held 1 s during the drag: the curve after each move is the page's own, not an answer's.
+  const hold = async (route) => {
+    try {
+      const response = await route.fetch();
+      await new Promise((r) => setTimeout(r, 1000));
+      await route.fulfill({ response });
+    } catch { /* aborted by a newer move */ }
+  };
+  await page.route('**/api/v1/tune', hold);
   const slider = await page.locator('#frames').boundingBox();
   await page.mouse.move(slider.x + slider.width * 0.2, slider.y + slider.height / 2);
   await page.mouse.down();
+  const curveState = () => page.evaluate(() => {
+    const c = document.querySelector('[data-testid="live-curve"]');
+    return [document.getElementById('frames').value, c.dataset.source, Number(c.dataset.drawn)];
+  });
+  const moves = [await curveState()];
   for (let i = 1; i <= 5; ++i) {
     await page.mouse.move(slider.x + slider.width * (0.2 + 0.05 * i), slider.y + slider.height / 2);
-    // Redrawn from the controls at once, before any answer (the page's own step, web/live_curve.js).
-    assert.equal(await page.getByTestId('live-curve').getAttribute('data-source'), 'input');
+    // A move that changed the value redrew the curve from the controls at once, before any answer (the
+    // page's own step, web/live_curve.js).
+    moves.push(await curveState());
+    const [[was, , drewBefore], [now, source, drew]] = moves.slice(-2);
+    if (now !== was) assert.ok(source === 'input' && drew > drewBefore, `move ${i}: ${JSON.stringify(moves)}`);
     for (const id of ['live-curve', 'summary']) {
       const box = await page.getByTestId(id).boundingBox();
       assert.ok(box.y >= -1 && box.y + box.height <= 845, `${id} at ${box.y}..${box.y + box.height} while dragging`);
@@ -777,16 +794,19 @@ test('phone: the live curve and the summary stay in view while a slider is dragg
     assert.ok(s.y >= 0 && s.y + s.height <= 844, 'the slider is in view too');
   }
   await page.mouse.up();
-  assert.ok(Number(await page.getByTestId('live-curve').getAttribute('data-drawn')) >= drawn + 5, 'redrawn on every input event');
+  assert.ok(new Set(moves.map(([v]) => v)).size >= 5, `the drag moved the slider: ${JSON.stringify(moves)}`);
+  assert.ok(Number(await page.getByTestId('live-curve').getAttribute('data-drawn')) >= drawn + 4, 'redrawn on every input event');
+  await page.unroute('**/api/v1/tune', hold);
   await settled(page);
   await page.waitForFunction(() => document.querySelector('[data-testid="live-curve"]').dataset.source === 'answer', null, { timeout: 20000 });
   await page.screenshot({ path: path.join(shotDir, 'web-screenshot-phone-drag.png') });
 
   // Tap targets: every visible button, select, number field, radio's and box's label, disclosure.
-  const small = await page.evaluate(() => [...document.querySelectorAll('button, select, input[type="number"], label:has(> input[type="radio"]), label:has(> input[type="checkbox"]), summary')]
+  const targets = await page.evaluate(() => [...document.querySelectorAll('button, select, input[type="number"], label:has(> input[type="radio"]), label:has(> input[type="checkbox"]), summary, a')]
     .filter((e) => e.getClientRects().length > 0 && getComputedStyle(e).visibility !== 'hidden')
-    .map((e) => [e.id || e.textContent.trim().slice(0, 30), e.getBoundingClientRect()])
-    .filter(([, r]) => r.height < 44 - 0.5 || r.width < 44 - 0.5).map(([n, r]) => `${n}: ${Math.round(r.width)}x${Math.round(r.height)}`));
+    .map((e) => [e.id || e.textContent.trim().slice(0, 30), e.getBoundingClientRect()]));
+  assert.ok(targets.length >= 25, `${targets.length} tap targets found`);
+  const small = targets.filter(([, r]) => r.height < 44 - 0.5 || r.width < 44 - 0.5).map(([n, r]) => `${n}: ${Math.round(r.width)}x${Math.round(r.height)}`);
   assert.deepEqual(small, [], 'tap targets under 44 px');
   // Text: every visible text at 12 px or more as shown (an SVG's text at its drawn scale).
   const tiny = await page.evaluate(() => {
@@ -799,11 +819,13 @@ test('phone: the live curve and the summary stay in view while a slider is dragg
       let px = parseFloat(getComputedStyle(el).fontSize);
       const svg = el.closest('svg');
       if (svg && el.getScreenCTM) px *= el.getScreenCTM().a;
-      if (px < 12 - 0.01) out.push(`${n.textContent.trim().slice(0, 24)}: ${px.toFixed(1)} px`);
+      out.push([n.textContent.trim().slice(0, 24), px]);
     }
     return out;
   });
-  assert.deepEqual(tiny, [], 'text under 12 px on a phone');
+  assert.ok(tiny.length >= 100, `${tiny.length} texts found`);
+  assert.ok(tiny.some(([, px]) => px > 12 && px < 13), 'the smallest page text (0.82rem of 15 px) is among them');
+  assert.deepEqual(tiny.filter(([, px]) => px < 12 - 0.01).map(([t, px]) => `${t}: ${px.toFixed(1)} px`), [], 'text under 12 px on a phone');
   await page.close();
   assert.deepEqual(consoleErrors, [], 'no console errors');
 });
@@ -829,6 +851,12 @@ test('desktop: the sliders lead the controls, the engine table fits its column w
   // Designer words first: how fast it settles, how much it bounces; the soft constraint's terms behind "details".
   assert.match(await page.getByTestId('live-words').textContent(), /^(no bounce|bounces \d+ %), (settles in \d+ frames|still moving after three periods)$/);
   for (const id of ['gamma', 'beta', 'erp', 'cfm']) assert.equal(await page.getByTestId(id).isVisible(), false, `${id} is behind details`);
+  assert.equal(await page.locator('#accuracy-note').isVisible(), false, 'the work-precision recommendation ("implicit_euler at 240 fps") too');
+  // What to type in your engine: one tap from the first view.
+  const entries = await page.evaluate(() => history.length);
+  await page.getByTestId('jump-engines').click();
+  await page.waitForFunction(() => { const r = document.getElementById('engines-h').getBoundingClientRect(); return r.top > -2 && r.top < innerHeight; });
+  assert.equal(await page.evaluate(() => history.length), entries, 'the jump adds no history entry');
   await page.locator('#technical-numbers summary').click();
   assert.equal(await page.getByTestId('erp').isVisible(), true);
   // The verdict: the 12-frame soft constraint at 60 fps runs slow, past 3 %: "off by N %" in amber;
@@ -942,6 +970,34 @@ test('one timeline: frame step, slow motion, and a drag on a plot moves the prev
   await page.locator('#ab-side').check();
   [b, a] = await boxes();
   assert.ok(a.x >= b.x + b.width - 1, 'A beside B');
+  await page.close();
+  assert.deepEqual(consoleErrors, [], 'no console errors');
+});
+
+test('a preset tuned by its modes: the summary shows the scene\'s solve once, marked pending before, never the tune\'s k', async (t) => {
+  if (!(await serves(t, 'POST /api/v1/simulate'))) return;
+  const page = await openPage(`${base}?preset=vehicle`, { width: 1440, height: 900 });
+  await page.waitForFunction(() => !document.getElementById('modal-group').hidden && !document.getElementById('summary').dataset.pending, null, { timeout: 30000 });
+  const before = await page.getByTestId('summary-k').textContent();
+  // Every text the bar's k takes, and whether it was marked pending then.
+  await page.evaluate(() => {
+    window.__k = [];
+    const el = document.querySelector('[data-testid="summary-k"]');
+    new MutationObserver(() => window.__k.push([el.textContent, el.classList.contains('pending')]))
+      .observe(el, { childList: true, characterData: true, subtree: true, attributes: true, attributeFilter: ['class'] });
+  });
+  await setControl(page, '#frames', '25');
+  await settled(page);
+  await page.waitForFunction(() => !document.getElementById('summary').dataset.pending, null, { timeout: 30000 });
+  const seen = await page.evaluate(() => window.__k);
+  const tuneK = await page.getByTestId('k').textContent();  // the joint alone, on its own mass
+  const solved = await page.getByTestId('summary-k').textContent();
+  assert.notEqual(solved, tuneK, 'the bar shows the mode\'s solve, not one spring');
+  assert.notEqual(solved, before, 'a new solve for 25 frames');
+  assert.ok(!seen.some(([text]) => text === tuneK), `the tune's k ${tuneK} never showed: ${JSON.stringify(seen)}`);
+  // Before the solve: the last solved value, marked pending; then the new one, once.
+  assert.ok(seen.every(([text, pending]) => (pending ? text === before : text === solved)), JSON.stringify(seen));
+  assert.ok(seen.some(([, pending]) => pending), 'marked pending while the scene solved');
   await page.close();
   assert.deepEqual(consoleErrors, [], 'no console errors');
 });
