@@ -1,4 +1,4 @@
-// Chipmunk 7.0.3 in the loop (SPEC.md 5): for each case softtune::tune() answers, the chipmunk report's
+// Chipmunk 7.0.3 in the loop (docs/engines.md, real-engine conformance): for each case softtune::tune() answers, the chipmunk report's
 // `parameters` and then its `exact` are typed into the real engine (engines/chipmunk), the trajectory is
 // fitted (fit_response), and the fit is held against the model: within 1 % frequency and 0.02 damping ratio
 // of `predicted`, and for `exact` also of the request (conformance_grid.h: f/fps 0.02 to 0.3 at 60 fps, zeta

@@ -1,4 +1,4 @@
-// Godot 3.2.3 in the loop (SPEC.md 5): for each case softtune::tune() answers, the godot report's
+// Godot 3.2.3 in the loop (docs/engines.md, real-engine conformance): for each case softtune::tune() answers, the godot report's
 // `parameters` and then its `exact` are typed into the real engine (godot3-server headless running
 // godot_run.gd, every case of one physics rate in one process), the recorded trajectory is fitted
 // (fit_response), and the fit is held against the model: within 1 % frequency and 0.02 damping ratio of
