@@ -350,7 +350,9 @@ void draw_inset(Builder& b, const StrokeSizes& s, const Inset& in, ImageSize siz
   b.rect(box.x, box.y, box.x + box.w, box.y + box.h, palette::kInsetPanel);
   b.stroke({{box.x, box.y}, {box.x + box.w, box.y}, {box.x + box.w, box.y + box.h}, {box.x, box.y + box.h}}, true,
            0.5 * s.outline_px, palette::kBandRule);
-  const auto [lo, hi] = inset_range(in);
+  // Plain names, not a structured binding: clang 14 (the sanitizer builds) cannot capture one in a lambda.
+  const std::pair<double, double> range = inset_range(in);
+  const double lo = range.first, hi = range.second;
   const double t0 = in.t_s.front(), t1 = in.t_s.back();
   const auto curve = [&](const std::vector<double>& v, Rgba colour, double width) {
     if (v.size() != in.t_s.size()) return;
