@@ -85,7 +85,10 @@ SceneLayers read_layers(const json* doc, const scene::Scene& scene) {
       {"contacts", &SceneLayers::contacts},     {"anchors", &SceneLayers::anchors},
       {"rest_marks", &SceneLayers::rest_marks}, {"wheel_axes", &SceneLayers::wheel_axes},
       {"mass_centres", &SceneLayers::mass_centres}, {"inset", &SceneLayers::inset}};
-  for (const auto& [key, value] : doc->items()) {
+  for (const auto& item : doc->items()) {
+    // Named, not a structured binding: clang 14 (the sanitizer builds) cannot capture one in a lambda.
+    const std::string& key = item.key();
+    const json& value = item.value();
     const auto it = std::find_if(std::begin(names), std::end(names), [&key](const auto& n) { return key == n.first; });
     if (it == std::end(names)) {
       throw invalid_field("layers." + key, "is not a layer (contacts, anchors, rest_marks, wheel_axes, mass_centres, inset)");
