@@ -7,6 +7,7 @@
 #include "app/budgets.h"
 #include "codec/problem.h"
 #include "softtune/support/run_limit.h"
+#include "softtune/support/sanitizer_build.h"
 
 namespace softtune::app {
 
@@ -163,7 +164,8 @@ void JobRunner::run() {
     try {
       // Kept as text: a sweep's tree of a few million nodes is several times its text.
       // Held at run time too: twice the job budget of CPU time, and its cancel flag between frames and cases.
-      const support::ScopedRunLimit limit({2.0 * budgets::kJobCpuSeconds, &job->progress.cancel_flag(), nullptr});
+      const support::ScopedRunLimit limit({2.0 * budgets::kJobCpuSeconds * support::kInstrumentationSlowdown,
+                                           &job->progress.cancel_flag(), nullptr});
       result = job->work(job->progress).dump();
       if (job->progress.cancelled()) state = JobState::cancelled, result.reset();
     } catch (const JobCancelled&) {

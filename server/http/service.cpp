@@ -7,6 +7,7 @@
 #include "codec/problem.h"
 #include "http/limits.h"
 #include "softtune/support/run_limit.h"
+#include "softtune/support/sanitizer_build.h"
 #include "http/cors.h"
 #include "http/memory_release.h"
 #include "http/router.h"
@@ -123,7 +124,9 @@ HttpResponse Service::dispatch(HttpRequest request) {
     if (const Route* r = find(request.method, request.path)) {
       check_query(*r, request);
       request.params = *match_route(r->pattern, request.path);
-      const support::ScopedRunLimit limit({limits::kRunLimitFactor * app::budgets::kCpuSeconds, nullptr, request.client_gone});
+      const support::ScopedRunLimit limit(
+          {limits::kRunLimitFactor * app::budgets::kCpuSeconds * support::kInstrumentationSlowdown, nullptr,
+           request.client_gone});
       HttpResponse response = r->handler(request, *this);
       response.route = r->pattern;
       return response;

@@ -8,7 +8,7 @@
 
 #include "http/routes.h"
 #include "http/service.h"
-#include "../sanitizer_build.h"
+#include "softtune/support/sanitizer_build.h"
 
 using softtune::http::HttpRequest;
 using softtune::http::Service;

@@ -23,7 +23,7 @@
 #include "softtune/exact_softness.h"
 #include "softtune/scene/modal_tuning.h"
 #include "../presets_dir.h"
-#include "../sanitizer_build.h"
+#include "softtune/support/sanitizer_build.h"
 
 namespace softtune::scene {
 namespace {
