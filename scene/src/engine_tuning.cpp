@@ -306,6 +306,41 @@ std::optional<FieldError> engine_tune_scene(const Scene& scene, const RunOptions
   return std::nullopt;
 }
 
+SceneResult run_scene_tuned_in_engine(const Scene& scene, const RunOptions& options) {
+  Scene base;
+  std::vector<std::optional<JointSpring>> springs;
+  std::optional<ModalTuningResult> modal;
+  EngineTuningResult tuning;
+  StageList stages;
+  stages.add(Stage::validate);
+  if (auto e = engine_tune_scene(scene, options, base, springs, modal, tuning, stages)) {
+    SceneResult r;
+    r.error = e;
+    r.engine = std::string(options.backend->name);
+    r.engine_version = std::string(options.backend->version);
+    r.stages = stages;
+    return r;
+  }
+  RunOptions confirm = options;
+  confirm.springs = springs;
+  confirm.springs.resize(base.joints.size());  // never empty: the confirming run is not tuned again
+  SceneResult run = run_scene(base, confirm);
+  if (!run.stages.items.empty()) run.stages.items.erase(run.stages.items.begin());  // its own validate: ran above
+  stages.append(run.stages);
+  run.stages = stages;
+  if (modal) {
+    for (std::size_t g = 0; g < modal->groups.size() && g < tuning.unknowns.size(); ++g) {
+      modal->groups[g].stiffness = tuning.unknowns[g].solved.stiffness;
+      modal->groups[g].damping = tuning.unknowns[g].solved.damping;
+    }
+    mark_solved_joints(base, *modal, run.joints);
+    run.modal_tuning = std::move(modal);
+  }
+  confirm_engine_tuning(run, tuning);
+  run.engine_tuning = std::move(tuning);
+  return run;
+}
+
 void confirm_engine_tuning(const SceneResult& run, EngineTuningResult& out) {
   for (EngineTarget& t : out.targets) {
     const ProbeResult* p = probe_named(run, t.probe);

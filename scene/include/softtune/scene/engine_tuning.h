@@ -56,6 +56,10 @@ std::optional<FieldError> engine_tune_scene(const Scene& scene, const RunOptions
                                             std::optional<ModalTuningResult>& modal, EngineTuningResult& out,
                                             StageList& stages);
 
+/// run_scene for a scene tunes_in_engine(): the solve, then the confirming full run of the solved springs in
+/// the engine, its answer carrying modal_tuning (the groups' springs as solved in the engine) and engine_tuning.
+SceneResult run_scene_tuned_in_engine(const Scene& scene, const RunOptions& options);
+
 /// Fills each target's measured response from the confirming full run of the solved springs.
 void confirm_engine_tuning(const SceneResult& run, EngineTuningResult& out);
 
