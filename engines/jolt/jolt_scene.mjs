@@ -69,6 +69,8 @@ export const version = 'Jolt Physics 5 (npm jolt-physics 1.1.0, WebAssembly)';
 const kDepth = 1.0;            // m, the slab every body lies in (mass and inertia are given, so it does not matter)
 const kConvexRadius = 0.05;    // m, Jolt's cDefaultConvexRadius
 const kSamePoint = 1e-4;     // m, contact points closer than this in the plane are one point
+// A world's share of the module's fixed 128 MB heap: 10.7 MB measured for the vehicle, and room for larger scenes.
+const kWorldHeapBytes = 16 * 2 ** 20;
 const kLayerStatic = 0;
 const kLayerMoving = 1;
 const kVelocitySteps = 'PhysicsSettings::mNumVelocitySteps';
@@ -87,8 +89,16 @@ function refuse(field, message) {
   throw Object.assign(e, { field, message });
 }
 
-function makeInterface() {
+// One world's Jolt, sized to the scene: JoltSettings' defaults (10240 bodies, 65536 body pairs, 10240 contact
+// constraints) take 20 MB of the module's fixed 128 MB heap per world, and a heap out of memory aborts the
+// whole module (every world of the worker). Past these sizes Jolt drops pairs or contacts
+// (EPhysicsUpdateError), it does not fail.
+function makeInterface(bodyCount) {
   const settings = new J.JoltSettings();
+  const pairs = Math.min(65536, Math.max(64, (bodyCount * (bodyCount - 1)) / 2));
+  settings.mMaxBodies = bodyCount + 1;
+  settings.mMaxBodyPairs = pairs;
+  settings.mMaxContactConstraints = Math.min(10240, 2 * pairs);
   const objectFilter = new J.ObjectLayerPairFilterTable(2);
   objectFilter.EnableCollision(kLayerStatic, kLayerMoving);
   objectFilter.EnableCollision(kLayerMoving, kLayerMoving);
@@ -263,7 +273,14 @@ class JoltSceneWorld {
       // Check what Jolt cannot represent before creating anything.
       const springs = jointsIn.map((j, i) => this.#checkJoint(j, i, bodiesIn.length));
 
-      this.jolt = makeInterface();
+      // JoltInterface's temp allocator alone takes 10 MB: a heap without room for another world answers an
+      // error here rather than abort the module (and every other world) on the allocation.
+      const free = J.JoltInterface.prototype.sGetFreeMemory();
+      if (free < kWorldHeapBytes) {
+        throw new Error(`jolt: the WebAssembly heap has ${(free / 2 ** 20).toFixed(1)} MiB free, a world needs ` +
+                        `${kWorldHeapBytes / 2 ** 20} MiB: too many worlds at once`);
+      }
+      this.jolt = makeInterface(bodiesIn.length);
       const system = this.jolt.GetPhysicsSystem();
       this.bodyInterface = system.GetBodyInterface();
       system.SetGravity(s.vec3(gravity[0], gravity[1], 0));
@@ -281,7 +298,6 @@ class JoltSceneWorld {
       bodiesIn.forEach((b, i) => this.#createBody(b, i, filter, s));
       this.angles = bodiesIn.map((b) => number(b.angle, 'angle', 0));
       jointsIn.forEach((j, i) => this.#createJoint(j, i, springs[i], s));
-      this.#listenToContacts(system);
       this.state = bodiesIn.map(() => new Array(8).fill(0));
       this.#read();
     } finally {
@@ -444,7 +460,11 @@ class JoltSceneWorld {
     }
   }
 
-  #listenToContacts(system) {
+  // A ContactListenerJS costs a wasm -> JS call per manifold per step (the vehicle's 6 s: 218 ms against 94 ms
+  // without one, measured), so it is attached by the first contacts() call, for the worlds whose contacts are
+  // read (the previews).
+  #listenToContacts() {
+    const system = this.jolt.GetPhysicsSystem();
     const listener = this.listener = new J.ContactListenerJS();
     const record = (body1, body2, manifoldPtr) => {
       if (!this.recording) return;
@@ -515,8 +535,16 @@ class JoltSceneWorld {
   bodies() { return this.state.map((s) => s.slice()); }
 
   /** [[px, py, nx, ny], ...]: every point of every touching contact after the last frame, the normal from
-   *  Jolt's body 1 to body 2 (ContactManifold::mWorldSpaceNormal). */
-  contacts() { return this.contactList.map((c) => c.slice()); }
+   *  Jolt's body 1 to body 2 (ContactManifold::mWorldSpaceNormal). The first call starts the recording
+   *  (#listenToContacts) and answers [] (the steps before it were not recorded; before the first step there
+   *  are no contacts, as in Box2D); each later call answers the contacts of the frame's last step. */
+  contacts() {
+    if (!this.listener) {
+      this.#listenToContacts();
+      return [];
+    }
+    return this.contactList.map((c) => c.slice());
+  }
 
   /** Frees everything this world made in the wasm heap. */
   destroy() {

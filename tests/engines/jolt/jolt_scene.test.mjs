@@ -122,3 +122,240 @@ test('a mouse joint pulls the crate to its target as one soft row on the crate\'
   // The grab point (0.5 m right of the centre) ends on the target (2.5, 0).
   assert.ok(Math.abs(x[x.length - 1] + 0.5 - 2.5) < 1e-3);
 });
+
+test('a sprung weld turns about its anchor as one soft rotation row on the inertia; a rigid weld holds', () => {
+  const m = 4, inertia = bodyMass(box('', 1, 0.5, [0, 0], { mass: m })).inertia;
+  const f = 1, zeta = 0.05, w = 2 * Math.PI * f, k = inertia * w * w, c = 2 * inertia * zeta * w;
+  // The weld sits at the plate's centre of mass, so the rotation row carries the inertia alone.
+  const scene = {
+    world: { fps: kFps, gravity: [0, 0] },
+    bodies: [box('post', 0.2, 2, [-2, 0], { static: true }),
+             box('plate', 1, 0.5, [0, 0], { mass: m, angular_velocity: 0.5 })],
+    joints: [{ id: 'weld', type: 'weld', body_a: 'post', body_b: 'plate', anchor_a: [0, 0], frequency_hz: f,
+               damping_ratio: zeta }],
+  };
+  const states = run(sceneRequest(scene, { spring: () => ({ stiffness: k, damping: c }) }), 240);
+  const fitted = fitResponse(states.map((s) => s[1][4]), kH);
+  const model = joltStepModel(inertia, k, c, kH);
+  console.log(`  weld: f ${fitted.frequencyHz.toFixed(4)} Hz (Jolt's step ${model.frequencyHz.toFixed(4)}), zeta ` +
+              `${fitted.dampingRatio.toFixed(4)} (step ${model.dampingRatio.toFixed(4)})`);
+  assert.ok(Math.abs(fitted.frequencyHz / model.frequencyHz - 1) < 5e-3);
+  assert.ok(Math.abs(fitted.dampingRatio - model.dampingRatio) < 5e-3);
+  assert.ok(states.every((s) => Math.hypot(s[1][2], s[1][3]) < 1e-4), 'the weld keeps its translation rigid');
+
+  // Rigid: a plate welded 1 m out from the post under gravity hangs on (rotation and translation both held).
+  scene.world.gravity = [0, -10];
+  scene.bodies[1].angular_velocity = 0;
+  scene.joints[0].anchor_a = [-1.9, 0];
+  delete scene.joints[0].frequency_hz;
+  const rigid = run(sceneRequest(scene), 120);
+  const last = rigid[rigid.length - 1][1];
+  assert.ok(Math.abs(last[4]) < 0.02 && Math.abs(last[3]) < 0.02, `rigid weld sagged: ${last}`);
+});
+
+// The wheel's off-axis drift: body B's centre against the anchor fixed in body A, across the axis fixed in A.
+function wheelDrift(joint, start, now) {
+  const a0 = start[joint.body_a], a = now[joint.body_a], b = now[joint.body_b];
+  const rot = (v, t) => [Math.cos(t) * v[0] - Math.sin(t) * v[1], Math.sin(t) * v[0] + Math.cos(t) * v[1]];
+  const local = rot([joint.anchor_b[0] - a0[0], joint.anchor_b[1] - a0[1]], -a0[4]);
+  const anchor = rot(local, a[4]), axis = rot(joint.axis, a[4] - a0[4]);
+  const dx = b[2] - (a[0] + anchor[0]), dy = b[3] - (a[1] + anchor[1]);
+  return Math.abs(-axis[1] * dx + axis[0] * dy);
+}
+
+const kVehicleSpring = { stiffness: 24842.07, damping: 914.753 };  // N/m, N s/m: Box2D 2.4's 3 Hz, zeta 0.5 heave
+
+test('the vehicle settles on its wheels, heaves near 3 Hz, and drives into the boxes after 2 s', () => {
+  const scene = readPreset('vehicle');
+  const request = sceneRequest(scene, { spring: () => kVehicleSpring });
+  const frames = frameCount(scene), fps = scene.world.fps;
+  const index = (id) => scene.bodies.findIndex((b) => b.id === id);
+  const chassis = index('chassis'), box00 = index('box_0_0');
+  const states = run(request, frames);
+  assert.ok(states.every((s) => s.every((b) => b.every(Number.isFinite))), 'every state finite');
+
+  const motorFrame = Math.round(2 * fps);
+  const heave = fitResponse(states.slice(0, motorFrame + 1).map((s) => s[chassis][3]), 1 / fps);
+  console.log(`  vehicle heave in Jolt: f ${heave.frequencyHz.toFixed(4)} Hz, zeta ${heave.dampingRatio.toFixed(4)} ` +
+              '(Box2D 2.4 with the same k, c: 3.0032 Hz, zeta 0.4993 -- softtune simulate --preset vehicle)');
+  assert.ok(Math.abs(heave.frequencyHz / 3 - 1) < 0.1, JSON.stringify(heave));
+  assert.ok(Math.abs(heave.dampingRatio - 0.5) < 0.1, JSON.stringify(heave));
+  // Settled by 2 s: on its wheels (tyres on the road), the heave and pitch died out; the free wheels let the
+  // car roll a little from its pitch kick (-2 cm/s).
+  const settled = states[motorFrame];
+  assert.ok(Math.abs(settled[chassis][6]) < 1e-3 && Math.abs(settled[chassis][7]) < 1e-3, `${settled[chassis]}`);
+  assert.ok(Math.abs(settled[chassis][5]) < 0.05, `${settled[chassis]}`);
+  for (const wheel of ['rear_wheel', 'front_wheel']) assert.ok(Math.abs(settled[index(wheel)][3] - 0.4) < 0.01);
+  // Drives right after the motor starts, and pushes into the stack.
+  const x = states.map((s) => s[chassis][2]);
+  assert.ok(Math.abs(x[motorFrame] - x[0]) < 0.05, 'no drive before the motor');
+  assert.ok(x[frames] - x[0] > 5, `chassis x ${x[frames]}`);
+  assert.ok(states[frames][box00][2] - 9.0 > 0.5, `the stack's bottom box at x ${states[frames][box00][2]}`);
+  const drift = Math.max(...request.joints.map((j) => Math.max(...states.map((s) => wheelDrift(j, states[0], s)))));
+  assert.ok(drift < 0.05, `off-axis drift ${drift} m`);
+  console.log(`  vehicle: chassis x ${x[frames].toFixed(2)} m at 6 s (Box2D 20.51), wheels' off-axis drift ` +
+              `${drift.toExponential(2)} m`);
+
+  // ms per vehicle run (6 s at 60 fps: build, 360 frames, the states read each frame), warm, without and with
+  // the contacts read each frame.
+  const timed = (withContacts) => {
+    const started = performance.now();
+    const world = jolt.build(request);
+    for (let f = 0; f < frames; ++f) {
+      world.step(f);
+      world.bodies();
+      if (withContacts) world.contacts();
+    }
+    world.destroy();
+    return performance.now() - started;
+  };
+  timed(false);
+  const plain = Math.min(timed(false), timed(false)), contacts = Math.min(timed(true), timed(true));
+  console.log(`  vehicle run (6 s at 60 fps) in node: ${plain.toFixed(1)} ms, ${contacts.toFixed(1)} ms reading contacts`);
+});
+
+test('every preset builds in Jolt and runs its whole duration finite, inside its world', () => {
+  const names = readdirSync(kPresetsDir).filter((f) => f.endsWith('.json')).map((f) => f.slice(0, -5));
+  let ran = 0;
+  for (const name of names) {
+    const scene = readPreset(name);
+    if (!scene.world) continue;  // schema.json: the presets' JSON schema, not a scene
+    const bounds = scene.world.bounds ?? [-1000, -1000, 1000, 1000];
+    const states = run(sceneRequest(scene), frameCount(scene));
+    const bad = states.findIndex((s) => !s.every((b) => b.every(Number.isFinite) &&
+      b[2] >= bounds[0] && b[2] <= bounds[2] && b[3] >= bounds[1] && b[3] <= bounds[3]));
+    assert.equal(bad, -1, `${name}: a body is not finite or left the world at frame ${bad}`);
+    ++ran;
+  }
+  assert.ok(ran >= 9, `${ran} presets ran`);
+});
+
+function refusal(request) {
+  try {
+    jolt.build(request).destroy();
+  } catch (e) {
+    return e;
+  }
+  return null;
+}
+
+test('what Jolt cannot represent is refused naming the field and jolt', () => {
+  const scene = readPreset('heavy_on_light');
+  const base = () => sceneRequest(scene);
+  const cases = [
+    ['joints.0.type', (r) => { r.joints[0].type = 'rope'; }],
+    ['bodies.1.shape.type', (r) => { r.bodies[1].shape = { type: 'capsule', radius: 1 }; }],
+    ['joints.1.spring.stiffness', (r) => { r.joints[1].spring = { stiffness: 0, damping: 5 }; }],
+    ['joints.0.spring.damping', (r) => { r.joints[0].spring = { stiffness: 600, damping: -20 }; }],
+    ['joints.0.length', (r) => { r.joints[0].length = 0; }],
+    ['settings.PhysicsSettings::mNumVelocitySteps', (r) => { r.settings['PhysicsSettings::mNumVelocitySteps'] = 0; }],
+  ];
+  for (const [field, edit] of cases) {
+    const request = base();
+    edit(request);
+    const e = refusal(request);
+    assert.ok(e, `${field}: built`);
+    assert.equal(e.field, field);
+    assert.match(e.message, /jolt/);
+  }
+});
+
+test('the engine settings reach Jolt: one velocity step and no position step let the chain stretch', () => {
+  const scene = readPreset('chain');
+  const gap = (settings) => {
+    const request = sceneRequest(scene, { settings });
+    const states = run(request, 120);
+    // Each pin's anchor on both bodies, carried from the start: their largest gap over the run.
+    const rot = (v, t) => [Math.cos(t) * v[0] - Math.sin(t) * v[1], Math.sin(t) * v[0] + Math.cos(t) * v[1]];
+    let worst = 0;
+    for (const j of request.joints) {
+      const at = (body, s) => {
+        const b0 = states[0][body], local = rot([j.anchor_a[0] - b0[0], j.anchor_a[1] - b0[1]], -b0[4]);
+        const p = rot(local, s[body][4]);
+        return [s[body][0] + p[0], s[body][1] + p[1]];
+      };
+      for (const s of states) {
+        const a = at(j.body_a, s), b = at(j.body_b, s);
+        worst = Math.max(worst, Math.hypot(a[0] - b[0], a[1] - b[1]));
+      }
+    }
+    return worst;
+  };
+  const defaults = gap({});
+  const loose = gap({ 'PhysicsSettings::mNumVelocitySteps': 1, 'PhysicsSettings::mNumPositionSteps': 0 });
+  console.log(`  chain pins' largest gap: ${defaults.toExponential(2)} m at Jolt's defaults (10, 2), ` +
+              `${loose.toExponential(2)} m at (1, 0)`);
+  // An iterative solver lets the 100 kg weight stretch the 1 kg links (the preset's note: Box2D 1.6 cm here).
+  assert.ok(defaults < 0.05);
+  assert.ok(loose > 3 * defaults);
+});
+
+test('contacts: a box resting on the ground touches at its two bottom corners, normal along y', () => {
+  const scene = {
+    world: { fps: kFps, gravity: [0, -10] },
+    bodies: [box('ground', 10, 1, [0, -0.5], { static: true }), box('crate', 1, 1, [0.3, 0.5], { mass: 1 })],
+    joints: [],
+  };
+  const world = jolt.build(sceneRequest(scene));
+  try {
+    assert.deepEqual(world.contacts(), []);  // before the first step: none (and the recording starts)
+    for (let f = 0; f < 30; ++f) world.step(f);
+    const points = world.contacts().sort((p, q) => p[0] - q[0]);
+    assert.equal(points.length, 2, JSON.stringify(points));
+    points.forEach((p, i) => {
+      assert.ok(Math.abs(p[0] - (0.3 + (i ? 0.5 : -0.5))) < 0.06, JSON.stringify(p));  // within the convex radius
+      assert.ok(Math.abs(p[1]) < 0.03 && Math.abs(Math.abs(p[3]) - 1) < 1e-4 && Math.abs(p[2]) < 1e-4, JSON.stringify(p));
+    });
+  } finally {
+    world.destroy();
+  }
+});
+
+test('a world gives back the wasm heap it took: builds, runs and refusals leave the free memory as it was', () => {
+  const request = sceneRequest(readPreset('vehicle'), { spring: () => kVehicleSpring });
+  const cycle = () => {
+    const world = jolt.build(request);
+    for (let f = 0; f < 60; ++f) world.step(f);
+    world.contacts();
+    world.step(60);
+    world.contacts();
+    world.destroy();
+    const refused = structuredClone(request);
+    refused.bodies[3].shape = { type: 'capsule' };  // refused after the first bodies are made
+    assert.ok(refusal(refused));
+  };
+  cycle();
+  const free = () => J.JoltInterface.prototype.sGetFreeMemory();
+  const before = free();
+  const world = jolt.build(request);
+  const held = before - free();
+  world.destroy();
+  for (let i = 0; i < 10; ++i) cycle();
+  const leaked = before - free();
+  console.log(`  wasm heap: a vehicle world holds ${(held / 1024).toFixed(0)} KiB; 10 cycles later ${leaked} B not given back`);
+  assert.ok(leaked < 0.01 * held, `${leaked} B of ${held} B`);
+});
+
+test('worlds past the heap answer an error (no field: not a scene feature) and the module keeps working', () => {
+  const request = sceneRequest(readPreset('vehicle'), { spring: () => kVehicleSpring });
+  const worlds = [];
+  let full = null;
+  try {
+    for (let i = 0; i < 40 && !full; ++i) {
+      try {
+        worlds.push(jolt.build(request));
+      } catch (e) {
+        full = e;
+      }
+    }
+  } finally {
+    for (const w of worlds) w.destroy();
+  }
+  console.log(`  ${worlds.length} vehicle worlds at once, then: ${full && full.message}`);
+  assert.ok(full && full.field === undefined && /jolt: the WebAssembly heap/.test(full.message));
+  assert.ok(worlds.length >= 6);
+  const world = jolt.build(request);
+  world.step(0);
+  assert.ok(world.bodies().every((b) => b.every(Number.isFinite)));
+  world.destroy();
+});
