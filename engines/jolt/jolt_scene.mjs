@@ -27,7 +27,9 @@
 //             collide_connected false: a GroupFilterTable with one subgroup per body, the pair disabled.
 //   damping   mLinearDamping = mAngularDamping = 0 (Jolt's default is 0.05 /s; the scene's bodies, as Box2D's
 //             b2BodyDef, have none). Sleeping off (the scene's allow_sleeping default: a sleeping body would
-//             freeze a measurement). mMaxAngularVelocity stays Jolt's 0.25 pi 60 = 47 rad/s.
+//             freeze a measurement). mMaxAngularVelocity = Box2D's cap, b2_maxRotation (0.5 pi) per step:
+//             94 rad/s at 60 Hz (Jolt's default 0.25 pi 60 = 47 rad/s would clip a fast wheel Box2D runs);
+//             mMaxLinearVelocity stays Jolt's 500 m/s (over Box2D's b2_maxTranslation, 2 m per step).
 //   step      each frame is world.substeps calls of JoltInterface::Step(h, 1), h = 1 / (fps substeps): one
 //             collision step per substep. PhysicsSettings::mNumVelocitySteps / mNumPositionSteps from
 //             request.settings under exactly those names (Jolt's defaults 10 and 2 when absent).
@@ -71,6 +73,7 @@ const kConvexRadius = 0.05;    // m, Jolt's cDefaultConvexRadius
 const kSamePoint = 1e-4;     // m, contact points closer than this in the plane are one point
 // A world's share of the module's fixed 128 MB heap: 10.7 MB measured for the vehicle, and room for larger scenes.
 const kWorldHeapBytes = 16 * 2 ** 20;
+const kMaxRotation = 0.5 * Math.PI;  // rad per step, Box2D 2.4's b2_maxRotation (b2_common.h)
 const kLayerStatic = 0;
 const kLayerMoving = 1;
 const kVelocitySteps = 'PhysicsSettings::mNumVelocitySteps';
@@ -355,6 +358,7 @@ class JoltSceneWorld {
         cs.mLinearDamping = 0;
         cs.mAngularDamping = 0;
         cs.mAllowSleeping = false;
+        cs.mMaxAngularVelocity = kMaxRotation / this.h;
       }
       const body = this.bodyInterface.CreateBody(cs);
       const id = body.GetID();
@@ -490,18 +494,23 @@ class JoltSceneWorld {
     system.SetContactListener(listener);
   }
 
-  // Reads every body into this.state; angles unwrapped from the last frame (Jolt's rotation is a quaternion;
-  // Box2D's angle keeps counting turns). Jolt caps |w| at 47 rad/s, under pi per frame at 15 fps and up.
+  // Each body's angle, unwrapped from the last step's (Jolt's rotation is a quaternion; Box2D's angle keeps
+  // counting turns): |w| <= mMaxAngularVelocity turns a body at most 0.5 pi per step.
+  #unwrap(i) {
+    const q = this.bodyObjects[i].GetRotation();
+    const angle = 2 * Math.atan2(q.GetZ(), q.GetW());
+    const last = this.angles[i];
+    this.angles[i] = angle + 2 * Math.PI * Math.round((last - angle) / (2 * Math.PI));
+    return this.angles[i];
+  }
+
+  // Reads every body into this.state.
   #read() {
     for (let i = 0; i < this.bodyObjects.length; ++i) {
       const body = this.bodyObjects[i];
       const o = body.GetPosition(), ox = o.GetX(), oy = o.GetY();
       const c = body.GetCenterOfMassPosition(), cx = c.GetX(), cy = c.GetY();
-      const q = body.GetRotation();
-      let angle = 2 * Math.atan2(q.GetZ(), q.GetW());
-      const last = this.angles[i];
-      angle += 2 * Math.PI * Math.round((last - angle) / (2 * Math.PI));
-      this.angles[i] = angle;
+      const angle = this.#unwrap(i);
       const v = body.GetLinearVelocity(), vx = v.GetX(), vy = v.GetY();
       const w = body.GetAngularVelocity().GetZ();
       const st = this.state[i];
@@ -526,6 +535,7 @@ class JoltSceneWorld {
       this.recording = k === this.substeps - 1;
       if (this.recording) this.contactList = [];
       this.jolt.Step(this.h, 1);
+      if (k < this.substeps - 1) for (let i = 0; i < this.bodyObjects.length; ++i) this.#unwrap(i);
     }
     this.recording = false;
     this.#read();

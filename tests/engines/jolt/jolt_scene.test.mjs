@@ -391,3 +391,16 @@ test('shapes: a polygon prism\'s centre of mass is the mass data\'s local centre
   // Jolt's position steps leave up to PhysicsSettings::mPenetrationSlop (0.02 m) of overlap (2.8 mm here).
   assert.ok(Math.abs(last[2][3] - 0.25) < 0.02 && Math.abs(last[2][5]) < 1e-3, `the cylinder rests on its side: ${last[2]}`);
 });
+
+test('a fast wheel keeps its spin (Box2D\'s 0.5 pi per step cap, not Jolt\'s 47 rad/s) and its angle counts the turns', () => {
+  const spin = 80;  // rad/s: over Jolt's default cap, under Box2D's 0.5 pi / h = 188 rad/s at 60 fps x 2 substeps
+  const scene = {
+    world: { fps: kFps, substeps: 2, gravity: [0, 0] },
+    bodies: [{ id: 'wheel', shape: { type: 'circle', radius: 0.3 }, position: [0, 0], mass: 2, angular_velocity: spin }],
+    joints: [],
+  };
+  const states = run(sceneRequest(scene), 60);
+  const last = states[states.length - 1][0];
+  assert.ok(Math.abs(last[7] - spin) < 1e-3 * spin, `w ${last[7]}`);
+  assert.ok(Math.abs(last[4] - spin * 1.0) < 1e-2 * spin, `angle ${last[4]} after 1 s`);
+});
