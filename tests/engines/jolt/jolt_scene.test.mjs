@@ -404,3 +404,49 @@ test('a fast wheel keeps its spin (Box2D\'s 0.5 pi per step cap, not Jolt\'s 47 
   assert.ok(Math.abs(last[7] - spin) < 1e-3 * spin, `w ${last[7]}`);
   assert.ok(Math.abs(last[4] - spin * 1.0) < 1e-2 * spin, `angle ${last[4]} after 1 s`);
 });
+
+test('contact mixing is Box2D\'s: friction sqrt(fa fb) decelerates a sliding box, restitution max(ra, rb) bounces a ball', () => {
+  // Friction 0.4 on a 0.9 road: sqrt(0.36) = 0.6, so the box slides at -0.6 g until it stops.
+  const slide = {
+    world: { fps: kFps, gravity: [0, -10] },
+    bodies: [box('road', 40, 1, [0, -0.5], { static: true, friction: 0.9 }),
+             box('crate', 1, 1, [0, 0.5], { mass: 2, friction: 0.4, linear_velocity: [3, 0] })],
+    joints: [],
+  };
+  const vx = run(sceneRequest(slide), 40).map((s) => s[1][5]);
+  const decel = (vx[5] - vx[20]) / (15 * kH);
+  console.log(`  sliding: ${decel.toFixed(3)} m/s^2 (sqrt(0.4 * 0.9) g = 6)`);
+  assert.ok(Math.abs(decel / 6 - 1) < 0.02, `${decel}`);
+  assert.ok(Math.abs(vx[39]) < 1e-3, 'stopped by 0.5 s');
+
+  // Restitution 0.5 on a 0 road: the ball leaves at half the speed it lands with.
+  const drop = {
+    world: { fps: kFps, gravity: [0, -10] },
+    bodies: [box('road', 4, 1, [0, -0.5], { static: true }),
+             { id: 'ball', shape: { type: 'circle', radius: 0.2 }, position: [0, 1.2], mass: 1, restitution: 0.5 }],
+    joints: [],
+  };
+  const vy = run(sceneRequest(drop), 60).map((s) => s[1][6]);
+  const bounce = vy.findIndex((v, i) => i > 0 && v > 0 && vy[i - 1] < 0);
+  assert.ok(bounce > 0, 'it bounces');
+  const ratio = vy[bounce] / -vy[bounce - 1];
+  console.log(`  bounce: leaves at ${ratio.toFixed(3)} of its landing speed (max(0.5, 0) = 0.5)`);
+  assert.ok(Math.abs(ratio - 0.5) < 0.05, `${ratio}`);
+});
+
+test('collide_connected false: jointed bodies pass through each other; true, or no joint, they collide', () => {
+  // Two overlapping boxes pinned at a point off both: the pin holds them, a contact would push them apart.
+  const scene = (joint) => ({
+    world: { fps: kFps, gravity: [0, 0] },
+    bodies: [box('a', 1, 1, [0, 0], { mass: 1 }), box('b', 1, 1, [0.5, 0], { mass: 1 })],
+    joints: joint ? [{ id: 'pin', type: 'revolute', body_a: 'a', body_b: 'b', anchor_a: [0.25, 2], ...joint }] : [],
+  });
+  const apart = (s) => s[1][2] - s[0][2];
+  const pinned = run(sceneRequest(scene({ collide_connected: false })), 30);
+  assert.ok(Math.abs(apart(pinned[30]) - 0.5) < 1e-4, `pinned, not colliding: ${apart(pinned[30])}`);
+  const loose = run(sceneRequest(scene(null)), 30);
+  assert.ok(apart(loose[30]) > 0.6, `no joint: pushed apart to ${apart(loose[30])}`);
+  const colliding = run(sceneRequest(scene({ collide_connected: true })), 30);
+  assert.ok(Math.abs(colliding[30][1][4] - colliding[30][0][4]) > 0.01 || Math.abs(apart(colliding[30]) - 0.5) > 0.01,
+            'collide_connected: the contact moves them about the pin');
+});
