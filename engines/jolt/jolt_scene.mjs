@@ -70,8 +70,8 @@ export const version = 'Jolt Physics 5 (npm jolt-physics 1.1.0, WebAssembly)';
 
 const kDepth = 1.0;            // m, the slab every body lies in (mass and inertia are given, so it does not matter)
 const kConvexRadius = 0.05;    // m, Jolt's cDefaultConvexRadius
-const kSamePoint = 1e-4;     // m, contact points closer than this in the plane are one point
-// A world's share of the module's fixed 128 MB heap: 10.7 MB measured for the vehicle, and room for larger scenes.
+const kSamePoint = 1e-4;       // m, contact points closer than this in the plane are one point
+// A world's share of the module's fixed 128 MiB heap: 10.4 MiB measured for the vehicle, and room for larger scenes.
 const kWorldHeapBytes = 16 * 2 ** 20;
 const kMaxRotation = 0.5 * Math.PI;  // rad per step, Box2D 2.4's b2_maxRotation (b2_common.h)
 const kLayerStatic = 0;
@@ -86,16 +86,16 @@ export async function init() {
   return J;
 }
 
+// A refusal as the worker passes it on: {field, message} (an Error, for its stack in a test's failure).
 function refuse(field, message) {
-  const e = new Error(message);
-  e.field = field;
-  throw Object.assign(e, { field, message });
+  throw Object.assign(new Error(message), { field });
 }
 
-// One world's Jolt, sized to the scene: JoltSettings' defaults (10240 bodies, 65536 body pairs, 10240 contact
-// constraints) take 20 MB of the module's fixed 128 MB heap per world, and a heap out of memory aborts the
-// whole module (every world of the worker). Past these sizes Jolt drops pairs or contacts
-// (EPhysicsUpdateError), it does not fail.
+// One world's Jolt, sized to the scene: with JoltSettings' defaults (10240 bodies, 65536 body pairs, 10240
+// contact constraints) a vehicle world took 19.7 MiB of the module's fixed 128 MiB heap, sized 10.4 MiB (the
+// rest is JoltInterface's fixed 10 MiB temp allocator), measured; a heap out of memory aborts the whole module
+// (every world of the worker). Past these sizes Jolt drops pairs or contacts (EPhysicsUpdateError), it does
+// not fail.
 function makeInterface(bodyCount) {
   const settings = new J.JoltSettings();
   const pairs = Math.min(65536, Math.max(64, (bodyCount * (bodyCount - 1)) / 2));

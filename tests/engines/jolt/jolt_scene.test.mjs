@@ -450,3 +450,16 @@ test('collide_connected false: jointed bodies pass through each other; true, or 
   assert.ok(Math.abs(colliding[30][1][4] - colliding[30][0][4]) > 0.01 || Math.abs(apart(colliding[30]) - 0.5) > 0.01,
             'collide_connected: the contact moves them about the pin');
 });
+
+test('a mouse joint\'s pull is capped at max_force along the pull: the crate accelerates at max_force / m', () => {
+  const scene = readPreset('mouse');
+  const m = bodyMass(scene.bodies[0]).mass, cap = 10;  // N, far under the stiff spring's k * 2 m
+  scene.joints[0].max_force = cap;
+  const k = 1e4, c = 2 * Math.sqrt(k * m);
+  const x = run(sceneRequest(scene, { spring: () => ({ stiffness: k, damping: c }) }), 30).map((s) => s[0][2]);
+  // From rest under a constant force, symplectic Euler's x_n = a h^2 n (n + 1) / 2 (the grab point stays far
+  // from the target, so the cap holds throughout).
+  const a = (2 * (x[30] - x[0])) / (kH * kH * 30 * 31);
+  console.log(`  mouse at its cap: ${a.toFixed(4)} m/s^2 (max_force / m = ${cap / m})`);
+  assert.ok(Math.abs(a / (cap / m) - 1) < 0.01, `${a}`);
+});
