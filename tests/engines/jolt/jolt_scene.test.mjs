@@ -463,3 +463,23 @@ test('a mouse joint\'s pull is capped at max_force along the pull: the crate acc
   console.log(`  mouse at its cap: ${a.toFixed(4)} m/s^2 (max_force / m = ${cap / m})`);
   assert.ok(Math.abs(a / (cap / m) - 1) < 0.01, `${a}`);
 });
+
+test('a distance joint without a spring is a rigid rod: a pendulum of period 2 pi sqrt(L / g)', () => {
+  const L = 1, g = 10, theta = 0.1;
+  // The rod holds the bob at its centre of mass, so the bob's own turning does not enter: a point pendulum.
+  const bob = [L * Math.sin(theta), 2 - L * Math.cos(theta)];
+  const scene = {
+    world: { fps: kFps, gravity: [0, -g] },
+    bodies: [box('pivot', 0.2, 0.2, [0, 2.1], { static: true }), box('bob', 0.1, 0.1, bob, { mass: 1 })],
+    joints: [{ id: 'rod', type: 'distance', body_a: 'pivot', body_b: 'bob', anchor_a: [0, 2], anchor_b: bob }],
+  };
+  const states = run(sceneRequest(scene), 600);
+  const fitted = fitResponse(states.map((s) => s[1][2]), kH);
+  const period = 2 * Math.PI * Math.sqrt(L / g) * (1 + (theta * theta) / 16);  // with the amplitude's first term
+  const stretch = Math.max(...states.map((s) => Math.abs(Math.hypot(s[1][2], s[1][3] - 2) - L)));
+  console.log(`  rod pendulum: period ${(1 / fitted.frequencyHz).toFixed(4)} s (2 pi sqrt(L / g) (1 + theta^2 / 16) = ` +
+              `${period.toFixed(4)}), zeta ${fitted.dampingRatio.toExponential(1)}, largest stretch ${stretch.toExponential(1)} m`);
+  assert.ok(Math.abs(1 / fitted.frequencyHz / period - 1) < 3e-3);
+  assert.ok(Math.abs(fitted.dampingRatio) < 2e-3);
+  assert.ok(stretch < 1e-3);
+});
