@@ -483,3 +483,25 @@ test('a distance joint without a spring is a rigid rod: a pendulum of period 2 p
   assert.ok(Math.abs(fitted.dampingRatio) < 2e-3);
   assert.ok(stretch < 1e-3);
 });
+
+test('substeps: each frame is world.substeps Jolt steps of 1 / (fps substeps); a world runs the same twice', () => {
+  const m = 1.5, f = 3, zeta = 0.05, w = 2 * Math.PI * f, k = m * w * w, c = 2 * m * zeta * w;
+  const fps = 30, substeps = 3;
+  const scene = {
+    world: { fps, substeps, gravity: [0, 0] },
+    bodies: [box('wall', 0.2, 2, [-1.1, 0], { static: true }), box('slider', 0.4, 0.4, [0, 0], { mass: m, linear_velocity: [0.2, 0] })],
+    joints: [{ id: 'spring', type: 'distance', body_a: 'wall', body_b: 'slider', anchor_a: [-1, 0], anchor_b: [0, 0],
+               frequency_hz: f, damping_ratio: zeta }],
+  };
+  const request = sceneRequest(scene, { spring: () => ({ stiffness: k, damping: c }) });
+  const states = run(request, 90);
+  const fitted = fitResponse(states.map((s) => s[1][2]), 1 / fps);
+  // Sampled once a frame, the poles are the step's cubed: the same s = ln z / h, so the step model at h / 3.
+  const model = joltStepModel(m, k, c, 1 / (fps * substeps)), once = joltStepModel(m, k, c, 1 / fps);
+  console.log(`  ${substeps} substeps at ${fps} fps: f ${fitted.frequencyHz.toFixed(4)} Hz, zeta ${fitted.dampingRatio.toFixed(4)} ` +
+              `(Jolt's step at 1/${fps * substeps} s: ${model.frequencyHz.toFixed(4)}, ${model.dampingRatio.toFixed(4)}; ` +
+              `one step a frame would be ${once.frequencyHz.toFixed(4)}, ${once.dampingRatio.toFixed(4)})`);
+  assert.ok(Math.abs(fitted.frequencyHz / model.frequencyHz - 1) < 2e-3);
+  assert.ok(Math.abs(fitted.dampingRatio - model.dampingRatio) < 3e-3);
+  assert.deepEqual(run(request, 90), states, 'the same request runs the same states');
+});
