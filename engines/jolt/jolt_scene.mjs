@@ -242,7 +242,7 @@ class JoltSceneWorld {
     this.bodyIds = [];
     this.bodyObjects = [];
     this.constraints = [];
-    this.motors = [];      // {constraint, speed, torque, start_s, on}
+    this.motors = [];      // {constraint, speed, start, on}: the wheel motors, switched on once
     this.contactList = [];
     try {
       this.#build(request);
@@ -294,12 +294,18 @@ class JoltSceneWorld {
       system.SetPhysicsSettings(ps);
 
       // collide_connected false: the pair's subgroups never collide (GroupFilterTable::CanCollide).
+      // Ref counted: the bodies' CollisionGroups hold it, and the last one destroyed frees it.
       const filter = new J.GroupFilterTable(Math.max(1, bodiesIn.length));
-      for (const j of jointsIn) {
-        if (!j.collide_connected && j.body_a >= 0 && j.body_a !== j.body_b) filter.DisableCollision(j.body_a, j.body_b);
+      filter.AddRef();
+      try {
+        for (const j of jointsIn) {
+          if (!j.collide_connected && j.body_a >= 0 && j.body_a !== j.body_b) filter.DisableCollision(j.body_a, j.body_b);
+        }
+        bodiesIn.forEach((b, i) => this.#createBody(b, i, filter, s));
+      } finally {
+        filter.Release();
       }
-      bodiesIn.forEach((b, i) => this.#createBody(b, i, filter, s));
-      this.angles = bodiesIn.map((b) => number(b.angle, 'angle', 0));
+      this.angles = bodiesIn.map((b) => b.angle ?? 0);
       jointsIn.forEach((j, i) => this.#createJoint(j, i, springs[i], s));
       this.state = bodiesIn.map(() => new Array(8).fill(0));
       this.#read();

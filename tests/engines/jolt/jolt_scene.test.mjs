@@ -334,9 +334,12 @@ test('a world gives back the wasm heap it took: builds, runs and refusals leave 
     world.step(60);
     world.contacts();
     world.destroy();
-    const refused = structuredClone(request);
-    refused.bodies[3].shape = { type: 'capsule' };  // refused after the first bodies are made
-    assert.ok(refusal(refused));
+    for (const at of [0, 3]) {  // refused before any body holds the collision filter, and after three do
+      const refused = structuredClone(request);
+      refused.bodies[at].shape = { type: 'capsule' };
+      assert.ok(refusal(refused));
+    }
+    jolt.build({ ...request, bodies: [], joints: [] }).destroy();
   };
   cycle();
   const free = () => J.JoltInterface.prototype.sGetFreeMemory();
@@ -347,7 +350,8 @@ test('a world gives back the wasm heap it took: builds, runs and refusals leave 
   for (let i = 0; i < 10; ++i) cycle();
   const leaked = before - free();
   console.log(`  wasm heap: a vehicle world holds ${(held / 1024).toFixed(0)} KiB; 10 cycles later ${leaked} B not given back`);
-  assert.ok(leaked < 0.01 * held, `${leaked} B of ${held} B`);
+  // The allocator's own bookkeeping moves a few bytes (+-8 B seen); a filter left behind per refusal is 2.3 kB.
+  assert.ok(held > 1e6 && Math.abs(leaked) < 256, `${leaked} B of ${held} B`);
 });
 
 test('worlds past the heap answer an error (no field: not a scene feature) and the module keeps working', () => {
