@@ -9,7 +9,11 @@
 // (body_a -1: the world), length already resolved, spring {stiffness, damping} in N/m, N s/m (weld: N m/rad,
 // N m s/rad) or null for a rigid joint.
 //
-// The mapping (read in Jolt/Physics, v5, the source jolt-physics 1.1.0 is built from):
+// The mapping (read in the JoltPhysics repository's Jolt/Physics, a recent snapshot of the v5 line jolt-physics
+// 1.1.0 builds: SixDOFConstraint.cpp UpdateFixedFreeAxis / CacheHasSpringLimits / SetupVelocityConstraint,
+// Body/MotionProperties.cpp SetMassProperties, ConstraintPart/RotationEulerConstraintPart.h
+// CalculateConstraintProperties, Constraints/ContactConstraintManager.h mCombineFriction / mCombineRestitution;
+// each behaviour below is also measured by tests/engines/jolt/jolt_scene.test.mjs in the npm build):
 //   plane     Jolt is y-up: the scene's x-y plane is Jolt's x-y plane, z out of it, so scene angles
 //             (counter-clockwise) are rotations about +z. Every dynamic body has
 //             BodyCreationSettings::mAllowedDOFs = EAllowedDOFs::Plane2D (TranslationX | TranslationY when
