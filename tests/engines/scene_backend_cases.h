@@ -101,6 +101,45 @@ inline Scene wheel_slider() {
   return s;
 }
 
+/// A 2 kg box (inertia about its centre 2 (0.6^2 + 0.2^2) / 12 kg m^2) welded at its centre to a static post,
+/// no gravity, spun at 0.5 rad/s: the weld's soft rotation swings it about its centre.
+inline Scene welded_box() {
+  Scene s;
+  s.name = "welded_box";
+  s.world.gravity = {0, 0};
+  s.bodies.push_back(box_body("post", {0, 0}, 0.1, 0.1, true));
+  BodySettings b = box_body("box", {0, 0}, 0.6, 0.2, false, 2.0);
+  b.angular_velocity = 0.5;
+  s.bodies.push_back(b);
+  JointSettings j;
+  j.id = "weld";
+  j.kind = JointKind::weld;
+  j.body_a = "post";
+  j.body_b = "box";
+  j.anchor_a = {0, 0};
+  j.anchor_b = {0, 0};
+  s.joints.push_back(j);
+  return s;
+}
+inline constexpr double kWeldedBoxInertia = 2.0 * (0.6 * 0.6 + 0.2 * 0.2) / 12.0;
+
+/// A 1.5 kg box held by an uncapped mouse joint at its centre, the target 0.3 m to its right, no gravity:
+/// the pull swings it about the target.
+inline Scene mouse_box() {
+  Scene s;
+  s.name = "mouse_box";
+  s.world.gravity = {0, 0};
+  s.bodies.push_back(box_body("box", {0, 1}, 0.4, 0.4, false, 1.5));
+  JointSettings j;
+  j.id = "pull";
+  j.kind = JointKind::mouse;
+  j.body_b = "box";
+  j.anchor_b = {0, 1};
+  j.target = {0.3, 1};
+  s.joints.push_back(j);
+  return s;
+}
+
 /// The preset starts the tyres where Box2D's contact solver leaves them: on the road's 1 cm polygon skin less
 /// its 5 mm slop. Shapes without a skin (ODE's, Bullet's: their margins lie inside the shapes) touch the road
 /// 5 mm lower; starting there keeps the landing out of the heave.

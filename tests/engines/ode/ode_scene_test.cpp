@@ -49,6 +49,33 @@ TEST(OdeScene, WheelSliderSpringsAlongTheAxisHoldsAcrossItAndSpinsFree) {
   EXPECT_NEAR(world->body(1).angular_velocity, 1.0, 1e-3);  // free rotation: still its starting 1 rad/s
 }
 
+TEST(OdeScene, WeldedBoxSwingsOnTheWeldsSoftRotation) {
+  const Scene s = welded_box();
+  const JointSpring spring = spring_for(kWeldedBoxInertia, 1.0, 0.1);  // N m/rad, N m s/rad
+  std::optional<FieldError> error;
+  auto world = build_scene(kOdeSceneBackend, s, {spring}, error);
+  ASSERT_TRUE(world) << error->field << ": " << error->rule;
+  double drift = 0.0;
+  const std::vector<double> angle = record(*world, 240, [&] {
+    drift = std::max(drift, world->body(1).centre.norm());
+    return world->body(1).angle;
+  });
+  expect_response(angle, 1.0 / 60, ode_scene_model(s, kWeldedBoxInertia, spring, 1.0 / 60), 1.0, 0.1, 0.05, 0.1);
+  EXPECT_LT(drift, 1e-3);  // the weld holds its translation
+}
+
+TEST(OdeScene, MouseSpringPullsTheBoxToItsTarget) {
+  const Scene s = mouse_box();
+  const JointSpring spring = spring_for(1.5, 2.0, 0.3);
+  std::optional<FieldError> error;
+  auto world = build_scene(kOdeSceneBackend, s, {spring}, error);
+  ASSERT_TRUE(world) << error->field << ": " << error->rule;
+  const std::vector<double> x = record(*world, 180, [&] { return world->body(0).centre.x(); });
+  expect_response(x, 1.0 / 60, ode_scene_model(s, 1.5, spring, 1.0 / 60), 2.0, 0.3, 0.05, 0.1);
+  EXPECT_NEAR(world->body(0).centre.x(), 0.3, 1e-3);
+  EXPECT_NEAR(world->body(0).centre.y(), 1.0, 1e-6);
+}
+
 TEST(OdeScene, VehicleSettlesHeavesAtThreeHertzAndDrivesIntoTheBoxes) {
   // As the preset is (the tyres 5 mm above the road: the landing is in the heave), then on the road.
   const VehicleRun preset = run_vehicle(kOdeSceneBackend, kVehicleStiffness, kVehicleDamping);
