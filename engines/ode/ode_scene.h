@@ -9,7 +9,8 @@
 // What maps to what (docs/scene-backends.md):
 //   box       dCreateBox, 1 m deep. circle: dCreateSphere of the radius -- ODE 0.16's dCylinder collides with
 //             a box and a plane, but with another cylinder only through libccd, so a sphere (whose section in
-//             the plane is the circle) is what collides with every shape. polygon: refused (not built yet).
+//             the plane is the circle) is what collides with every shape. polygon: refused -- a dCreateConvex prism
+//             meets a box at one contact point at a time (a dropped triangle rocks and creeps at 1 cm/s).
 //   mass      body_mass() (scene_geometry.h) through dMassSetParameters, the centre of mass at the body's
 //             origin and the geom offset from it (dGeomSetOffsetPosition); fixed_rotation: the Plane2D
 //             joint's angle motor at velocity 0 with dInfinity force.

@@ -140,6 +140,22 @@ inline Scene mouse_box() {
   return s;
 }
 
+/// A triangle (its centroid 0.2 m above its base's middle, the body origin) dropped 0.3 m onto a static
+/// ground box: it lands flat on its base and rests there.
+inline Scene dropped_triangle() {
+  Scene s;
+  s.name = "dropped_triangle";
+  s.bodies.push_back(box_body("ground", {0, -0.5}, 10.0, 1.0, true));
+  BodySettings t;
+  t.id = "triangle";
+  t.shape.kind = ShapeKind::polygon;
+  t.shape.vertices = {{-0.5, 0.0}, {0.5, 0.0}, {0.0, 0.6}};
+  t.mass = 2.0;
+  t.position = {0, 0.3};
+  s.bodies.push_back(t);
+  return s;
+}
+
 /// The preset starts the tyres where Box2D's contact solver leaves them: on the road's 1 cm polygon skin less
 /// its 5 mm slop. Shapes without a skin (ODE's, Bullet's: their margins lie inside the shapes) touch the road
 /// 5 mm lower; starting there keeps the landing out of the heave.
@@ -320,6 +336,22 @@ inline void expect_presets_run_or_refused(const SceneBackend& backend) {
     EXPECT_TRUE(finite);
     std::printf("%s %s: ran %d frames, finite %d\n", backend.name.data(), name.c_str(), frames, finite ? 1 : 0);
   }
+}
+
+/// The triangle's rest in one engine after 2 s: on its base (within the engine's contact skin, 2 cm), flat,
+/// still, its centre of mass the centroid above its origin.
+inline void expect_triangle_rests(const SceneBackend& backend) {
+  const Scene s = dropped_triangle();
+  std::optional<FieldError> error;
+  auto world = build_scene(backend, s, {}, error);
+  ASSERT_TRUE(world) << error->field << ": " << error->rule;
+  record(*world, 120, [] { return 0.0; });
+  const scene::BodyState b = world->body(1);
+  EXPECT_NEAR(b.origin.y(), 0.0, 0.02);
+  EXPECT_NEAR(b.origin.x(), 0.0, 0.01);
+  EXPECT_NEAR(b.angle, 0.0, 0.01);
+  EXPECT_LT(b.velocity.norm(), 0.01);
+  EXPECT_NEAR((b.centre - b.origin - Eigen::Rotation2Dd(b.angle) * Eigen::Vector2d(0, 0.2)).norm(), 0.0, 1e-5);
 }
 
 }  // namespace softtune::test_support::scene_cases

@@ -74,6 +74,8 @@ TEST(BulletScene, MouseSpringPullsTheBoxToItsTarget) {
   EXPECT_NEAR(world->body(0).centre.y(), 1.0, 1e-6);
 }
 
+TEST(BulletScene, ADroppedPolygonPrismLandsFlatOnItsBase) { expect_triangle_rests(kBulletSceneBackend); }
+
 TEST(BulletScene, VehicleSettlesHeavesNearThreeHertzAndDrivesIntoTheBoxes) {
   // As the preset is (the tyres 5 mm above the road: the landing is in the heave), then on the road.
   const VehicleRun preset = run_vehicle(kBulletSceneBackend, kVehicleStiffness, kVehicleDamping);
