@@ -188,12 +188,17 @@ inline Springs box2d_springs(const Scene& s) {
   return out;
 }
 
+/// Builds `s` in the backend with its settings' defaults, or `settings` when given.
 inline std::unique_ptr<SceneWorld> build_scene(const SceneBackend& backend, const Scene& s, const Springs& springs,
-                                               std::optional<FieldError>& error) {
+                                               std::optional<FieldError>& error,
+                                               const engines::SettingValues& settings = {}) {
   SceneBuild b;
   b.scene = &s;
   b.springs = springs;
-  for (const engines::SettingSpec& spec : backend.settings) b.settings.push_back(spec.default_value);
+  b.settings = settings;
+  if (b.settings.empty()) {
+    for (const engines::SettingSpec& spec : backend.settings) b.settings.push_back(spec.default_value);
+  }
   return backend.build(b, error);
 }
 
@@ -274,13 +279,14 @@ struct VehicleRun {
   double run_ms = 0.0;
   Box2DVehicle box2d;
 };
-inline VehicleRun run_vehicle(const SceneBackend& backend, double k, double c, double lower = 0.0) {
+inline VehicleRun run_vehicle(const SceneBackend& backend, double k, double c, double lower = 0.0,
+                              const engines::SettingValues& settings = {}) {
   VehicleRun out;
   const Scene s = typed_vehicle(k, c, lower);
   const int chassis = body_of(s, "chassis"), wheel = body_of(s, "rear_wheel"), box = body_of(s, "box_0_0");
   const int heave_frames = static_cast<int>(std::lround(2.0 * s.world.fps));
   std::optional<FieldError> error;
-  auto world = build_scene(backend, s, Springs(2, JointSpring{k, c}), error);
+  auto world = build_scene(backend, s, Springs(2, JointSpring{k, c}), error, settings);
   if (!world) return out;
   out.built = true;
   std::vector<double> heave{world->body(chassis).centre.y()};

@@ -101,6 +101,21 @@ TEST(OdeScene, VehicleSettlesHeavesAtThreeHertzAndDrivesIntoTheBoxes) {
   EXPECT_GT(preset.chassis_x_end - preset.chassis_x_at_motor, 5.0);
 }
 
+TEST(OdeScene, VehicleInQuickStepHeavesAtThreeHertzAndDrives) {
+  // dWorldQuickStep (stepper 1) with ODE's 20 sweeps at w = 1.3: SOR from lambda = 0 reaches the rows'
+  // exact impulses to 1 - (1 - w)^20 = 1 - 3.5e-11 (ode_impulse_fraction) -- the heave is dWorldStep's, in
+  // about half its time.
+  const VehicleRun v = run_vehicle(kOdeSceneBackend, kVehicleStiffness, kVehicleDamping, kBox2DTyreLift,
+                                   {1, 20, 1.3, 0.2, 1e-10});
+  ASSERT_TRUE(v.built && v.finite);
+  print_vehicle("ode dWorldQuickStep (tyres on the road)", v);
+  EXPECT_NEAR(v.wheel_y_at_motor, 0.4, 0.02);
+  ASSERT_TRUE(v.heave.frequency_hz && v.heave.damping_ratio);
+  EXPECT_NEAR(*v.heave.frequency_hz, 3.0, 0.06);
+  EXPECT_NEAR(*v.heave.damping_ratio, 0.5, 0.02);
+  EXPECT_GT(v.chassis_x_end - v.chassis_x_at_motor, 5.0);
+}
+
 TEST(OdeScene, EveryPresetRunsItsWholeDurationFiniteOrIsRefusedNamingAFeature) {
   expect_presets_run_or_refused(kOdeSceneBackend);
 }
