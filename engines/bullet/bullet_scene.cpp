@@ -18,7 +18,8 @@ constexpr std::array<std::string_view, 2> kOffOn = {"false", "true"};
 constexpr std::size_t kIterations = 0, kErp = 1, kErp2 = 2, kSplitImpulse = 3;
 // btContactSolverInfo's own defaults (btContactSolverInfo.h, btContactSolverInfoData's constructor).
 constexpr std::array<engines::SettingSpec, 4> kSettings = {{
-    {"m_numIterations", 10, 1, 1000, true, {}, "", "btContactSolverInfo::m_numIterations, the solver's sweeps per step"},
+    {"m_numIterations", 10, 1, 1000, true, {}, "",
+     "btContactSolverInfo::m_numIterations, the solver's sweeps per step"},
     {"m_erp", 0.2, 0, 1, false, {}, "", "btContactSolverInfo::m_erp, the joints' error reduction per step"},
     {"m_erp2", 0.2, 0, 1, false, {}, "", "btContactSolverInfo::m_erp2, the contacts' error reduction per step"},
     {"m_splitImpulse", 1, 0, 1, true, kOffOn, "",
@@ -223,7 +224,8 @@ bool BulletWorld::add_joint(std::size_t i, const std::optional<JointSpring>& s, 
         return false;
       }
       if (!s) {
-        error = FieldError{field + ".type", "bullet builds a mouse joint as a spring: it needs a tuning or typed values"};
+        error = FieldError{field + ".type",
+                           "bullet builds a mouse joint as a spring: it needs a tuning or typed values"};
         return false;
       }
       point = vec3(j.anchor_b);
@@ -234,7 +236,8 @@ bool BulletWorld::add_joint(std::size_t i, const std::optional<JointSpring>& s, 
     default:
       break;
   }
-  if (s && !explicit_spring_stable(a, b, j.kind == JointKind::weld, *s, step_size(scene_.world.fps, scene_.world.substeps))) {
+  const double h = step_size(scene_.world.fps, scene_.world.substeps);
+  if (s && !explicit_spring_stable(a, b, j.kind == JointKind::weld, *s, h)) {
     error = FieldError{field, "bullet's spring row is explicit (semi-implicit Euler on the bodies' mass, "
                               "btGeneric6DofSpring2Constraint::get_limit_motor_info2): this stiffness and damping "
                               "grow at the scene's step (omega h above 2); Bullet would blow up"};
@@ -379,7 +382,8 @@ std::optional<JointSpring> parse(const Scene&, std::size_t, const engines::Param
   const std::optional<double> k = engines::parameter_value(typed, engines::kBulletStiffness);
   const std::optional<double> c = engines::parameter_value(typed, engines::kBulletDamping);
   if (!k || !c) {
-    error = {std::string(k ? engines::kBulletDamping : engines::kBulletStiffness), "bullet needs this field: the joint's spring"};
+    error = {std::string(k ? engines::kBulletDamping : engines::kBulletStiffness),
+             "bullet needs this field: the joint's spring"};
     return std::nullopt;
   }
   if (!(*k > 0.0) || !(*c >= 0.0) || !std::isfinite(*k) || !std::isfinite(*c)) {

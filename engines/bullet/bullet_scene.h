@@ -28,8 +28,9 @@
 //   restitution  Bullet multiplies them too (calculateCombinedRestitution); Box2D takes the max. Left as
 //             Bullet does it (the product): the presets' restitution is 0 everywhere, where both agree.
 // Refused: a spring whose explicit step grows at the scene's rate (semi-implicit Euler: omega h above 2, the
-// `stiff` preset), and a capped mouse. A joint's spring is typed as "btGeneric6DofSpring2Constraint::setStiffness" / "::setDamping" (N/m and N s/m,
-// the weld's N m/rad and N m s/rad) on the joint's sprung axis, limitIfNeeded false.
+// `stiff` preset), and a capped mouse. A joint's spring is typed as
+// "btGeneric6DofSpring2Constraint::setStiffness" / "::setDamping" (N/m and N s/m, the weld's N m/rad and
+// N m s/rad) on the joint's sprung axis, limitIfNeeded false.
 
 #include "softtune/scene/scene_world.h"
 

@@ -19,7 +19,8 @@ constexpr std::array<std::string_view, 2> kStepperChoices = {"dWorldStep", "dWor
 constexpr std::size_t kStepper = 0, kIterations = 1, kSorW = 2, kErp = 3, kCfm = 4;
 // ODE's own defaults (objects.cpp dxWorld::dxWorld, dxQuickStepParameters); the stepper as the 1-D model's.
 constexpr std::array<engines::SettingSpec, 5> kSettings = {{
-    {"stepper", 0, 0, 1, true, kStepperChoices, "", "dWorldStep solves the rows exactly; dWorldQuickStep runs SOR sweeps"},
+    {"stepper", 0, 0, 1, true, kStepperChoices, "",
+     "dWorldStep solves the rows exactly; dWorldQuickStep runs SOR sweeps"},
     {"dWorldSetQuickStepNumIterations", 20, 1, 10000, true, {}, "", "dWorldQuickStep's SOR sweeps per step"},
     {"dWorldSetQuickStepW", 1.3, 0.01, 1.99, false, {}, "", "dWorldQuickStep's over-relaxation"},
     {"dWorldSetERP", 0.2, 0, 1, false, {}, "", "the global ERP: contacts' and rigid joints' error reduction per step"},
@@ -232,17 +233,22 @@ bool OdeWorld::add_joint(std::size_t i, const std::optional<JointSpring>& s, std
                                                  "max_force must be at least 1e9 (uncapped)"};
         return false;
       }
+      if (!soft) {
+        error = FieldError{field + ".type", "ode builds a mouse joint as a soft ball joint: it needs a tuning or "
+                                            "typed values"};
+        return false;
+      }
       joint = dJointCreateBall(world_, nullptr);
       dJointAttach(joint, b, nullptr);
       dJointSetBallAnchor(joint, j.anchor_b.x(), j.anchor_b.y(), 0);
       dJointSetBallAnchor2(joint, j.target.x(), j.target.y(), 0);
-      if (soft) {
-        dJointSetBallParam(joint, dParamERP, soft->first);
-        dJointSetBallParam(joint, dParamCFM, soft->second);
-      }
+      dJointSetBallParam(joint, dParamERP, soft->first);
+      dJointSetBallParam(joint, dParamCFM, soft->second);
       break;
   }
-  if (!j.collide_connected && ia >= 0) no_collide_.emplace_back(static_cast<std::size_t>(ia), static_cast<std::size_t>(body_index(scene_, j.body_b)));
+  if (!j.collide_connected && ia >= 0) {
+    no_collide_.emplace_back(static_cast<std::size_t>(ia), static_cast<std::size_t>(body_index(scene_, j.body_b)));
+  }
   return true;
 }
 
