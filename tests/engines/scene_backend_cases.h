@@ -360,4 +360,26 @@ inline void expect_triangle_rests(const SceneBackend& backend) {
   EXPECT_NEAR((b.centre - b.origin - Eigen::Rotation2Dd(b.angle) * Eigen::Vector2d(0, 0.2)).norm(), 0.0, 1e-5);
 }
 
+
+/// A box (friction 0.4) sliding at 3 m/s on a ground box (friction 0.9): Box2D's mixed friction
+/// sqrt(0.4 0.9) = 0.6 decelerates it at 0.6 g = 6 m/s^2, so after 0.25 s it moves at 1.5 m/s and stops at
+/// 0.5 s, 0.75 m on.
+inline void expect_friction_mixes_as_box2d(const SceneBackend& backend) {
+  Scene s;
+  s.name = "sliding_box";
+  s.bodies.push_back(box_body("ground", {0, -0.5}, 20.0, 1.0, true));
+  s.bodies[0].friction = 0.9;
+  BodySettings b = box_body("box", {0, 0.25}, 0.5, 0.5, false, 2.0);
+  b.friction = 0.4;
+  b.linear_velocity = {3.0, 0};
+  s.bodies.push_back(b);
+  std::optional<FieldError> error;
+  auto world = build_scene(backend, s, {}, error);
+  ASSERT_TRUE(world) << error->field << ": " << error->rule;
+  const std::vector<double> vx = record(*world, 60, [&] { return world->body(1).velocity.x(); });
+  EXPECT_NEAR(vx[15], 1.5, 0.1);
+  EXPECT_NEAR(vx[60], 0.0, 0.02);
+  EXPECT_NEAR(world->body(1).centre.x(), 0.75, 0.06);
+}
+
 }  // namespace softtune::test_support::scene_cases

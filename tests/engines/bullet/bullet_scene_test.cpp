@@ -76,6 +76,8 @@ TEST(BulletScene, MouseSpringPullsTheBoxToItsTarget) {
 
 TEST(BulletScene, ADroppedPolygonPrismLandsFlatOnItsBase) { expect_triangle_rests(kBulletSceneBackend); }
 
+TEST(BulletScene, FrictionMixesAsBox2DsSqrtOfTheProduct) { expect_friction_mixes_as_box2d(kBulletSceneBackend); }
+
 TEST(BulletScene, VehicleSettlesHeavesNearThreeHertzAndDrivesIntoTheBoxes) {
   // As the preset is (the tyres 5 mm above the road: the landing is in the heave), then on the road.
   const VehicleRun preset = run_vehicle(kBulletSceneBackend, kVehicleStiffness, kVehicleDamping);

@@ -76,6 +76,8 @@ TEST(OdeScene, MouseSpringPullsTheBoxToItsTarget) {
   EXPECT_NEAR(world->body(0).centre.y(), 1.0, 1e-6);
 }
 
+TEST(OdeScene, FrictionMixesAsBox2DsSqrtOfTheProduct) { expect_friction_mixes_as_box2d(kOdeSceneBackend); }
+
 TEST(OdeScene, VehicleSettlesHeavesAtThreeHertzAndDrivesIntoTheBoxes) {
   // As the preset is (the tyres 5 mm above the road: the landing is in the heave), then on the road.
   const VehicleRun preset = run_vehicle(kOdeSceneBackend, kVehicleStiffness, kVehicleDamping);
