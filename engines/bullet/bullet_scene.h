@@ -5,7 +5,7 @@
 // steps). The scene plane is Bullet's x-y plane (y up, no axis change); every body keeps to it by
 // setLinearFactor(1, 1, 0) and setAngularFactor(0, 0, 1).
 //
-// What maps to what (docs/scene-backends.md):
+// What maps to what (docs/engines/bullet.md, "Scenes in Bullet"):
 //   box       btBoxShape, 1 m deep; circle: btCylinderShapeZ, 1 m long (its axis the plane normal);
 //             polygon: btConvexHullShape prism, its points about the centre of mass. Collision margin 0.01 m
 //             (Box2D's polygon skin, b2_polygonRadius); the box's and cylinder's margin lies inside their

@@ -6,7 +6,7 @@
 // dJointCreatePlane2D, and after each step its rotation and angular velocity are projected back onto the
 // z axis, as ODE's own ode/demo/demo_plane2d.cpp does (the joint holds velocities, not the drift).
 //
-// What maps to what (docs/scene-backends.md):
+// What maps to what (docs/engines/ode.md, "Scenes in ODE"):
 //   box       dCreateBox, 1 m deep. circle: dCreateSphere of the radius -- ODE 0.16's dCylinder collides with
 //             a box and a plane, but with another cylinder only through libccd, so a sphere (whose section in
 //             the plane is the circle) is what collides with every shape. polygon: refused -- a dCreateConvex prism
