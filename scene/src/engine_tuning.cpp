@@ -216,6 +216,7 @@ std::vector<std::string> joint_probe_ids(const Scene& scene) {
 
 bool tunes_in_engine(const Scene& scene, const RunOptions& options) {
   if (!options.backend || options.backend == &kBox2DV24SceneBackend || !options.springs.empty()) return false;
+  if (scene.bodies.empty()) return false;
   if (scene.modal_tuning) return true;
   return std::any_of(scene.joints.begin(), scene.joints.end(), [](const JointSettings& j) { return j.tuning.has_value(); });
 }
@@ -241,8 +242,13 @@ std::optional<FieldError> engine_tune_scene(const Scene& scene, const RunOptions
   }
   if (window_probes.empty()) return std::nullopt;
   out.window_s = targets_window(base, window_probes);
+  // The solve's runs: the scene up to the window's end, measuring only the probes it reads.
   Scene cut = base;
   cut.world.duration_s = out.window_s;
+  cut.expectations.clear();
+  std::erase_if(cut.probes, [&](const ProbeSettings& p) {
+    return std::find(window_probes.begin(), window_probes.end(), p.id) == window_probes.end();
+  });
 
   // Box2D 2.4's own run of its solve: what it measures, and (per joint) which requests it meets.
   RunOptions box2d_options;
