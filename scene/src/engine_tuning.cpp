@@ -284,6 +284,10 @@ std::optional<FieldError> engine_tune_scene(const Scene& scene, const RunOptions
   std::optional<FieldError> error;
   std::optional<Eigen::VectorXd> r = evaluate(s, x, error);
   if (error) return error;
+  for (std::size_t t = 0; r && t < out.targets.size(); ++t) {  // what the engine does with Box2D's springs
+    out.targets[t].start_frequency_hz = out.targets[t].requested_frequency_hz * (1.0 + (*r)[2 * t]);
+    out.targets[t].start_damping_ratio = out.targets[t].requested_damping_ratio + (*r)[2 * t + 1];
+  }
   while (r && !within_tolerance(*r) && s.runs + n + 1 <= kMaxEngineRuns) {
     const std::optional<Eigen::MatrixXd> J = jacobian(s, out.modal, x, *r, error);
     if (error) return error;

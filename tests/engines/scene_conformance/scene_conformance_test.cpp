@@ -92,8 +92,9 @@ std::string conformance_number(std::optional<double> v, const char* format) {
 
 TEST(SceneConformance, EveryPresetInEveryEngineMeetsItsRequestAndTheCopyTest) {
   std::string table =
-      "| preset | engine | probe | asked f (Hz), zeta | measured f (Hz), zeta | error f, zeta | engine runs | copy: delta f, zeta |\n"
-      "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+      "| preset | engine | probe | asked f (Hz), zeta | with Box2D's k, c | measured f (Hz), zeta | error f, zeta | engine runs | "
+      "copy: delta f, zeta |\n"
+      "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
   std::string refusals;
   for (const SceneBackend* backend : conformance_backends()) {
     const engines::SettingValues settings = conformance_defaults(*backend);
@@ -145,6 +146,15 @@ TEST(SceneConformance, EveryPresetInEveryEngineMeetsItsRequestAndTheCopyTest) {
       ASSERT_FALSE(copy.error) << name << ": " << copy.error->field << " " << copy.error->rule;
 
       const int runs = run.engine_tuning ? run.engine_tuning->runs : 0;
+      auto untuned = [&](const std::string& id) {  // the engine's run of Box2D 2.4's springs, before tuning
+        if (!run.engine_tuning) return std::string("(the same)");
+        for (const EngineTarget& t : run.engine_tuning->targets) {
+          if (t.probe == id) {
+            return conformance_number(t.start_frequency_hz, "%.3f") + ", " + conformance_number(t.start_damping_ratio, "%.3f");
+          }
+        }
+        return std::string("-");
+      };
       for (const std::string& id : probes) {
         const ProbeResult* p = conformance_probe(run, id);
         const ProbeResult* c = conformance_probe(copy, id);
@@ -169,7 +179,7 @@ TEST(SceneConformance, EveryPresetInEveryEngineMeetsItsRequestAndTheCopyTest) {
         EXPECT_LE(std::abs(*dz), 0.01) << where << " (copy)";
         table += "| " + name + " | " + std::string(backend->name) + " | " + id + " | " +
                  conformance_number(p->requested_frequency_hz, "%.3f") + ", " +
-                 conformance_number(p->requested_damping_ratio, "%.3f") + " | " +
+                 conformance_number(p->requested_damping_ratio, "%.3f") + " | " + untuned(id) + " | " +
                  conformance_number(p->measured.frequency_hz, "%.3f") + ", " +
                  conformance_number(p->measured.damping_ratio, "%.3f") + " | " +
                  conformance_number(*p->frequency_error * 100.0, "%+.2f %%") + ", " +

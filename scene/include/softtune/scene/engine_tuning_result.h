@@ -19,6 +19,8 @@ struct EngineTarget {
   double requested_damping_ratio = 0.0;
   std::optional<double> box2d_frequency_hz;   ///< Hz, what Box2D 2.4 measures with its own solve
   std::optional<double> box2d_damping_ratio;
+  std::optional<double> start_frequency_hz;   ///< Hz, the engine's run with Box2D 2.4's solve (before tuning)
+  std::optional<double> start_damping_ratio;
   std::optional<double> measured_frequency_hz;  ///< Hz, the engine's run with the solved springs
   std::optional<double> measured_damping_ratio;
   std::optional<double> frequency_error;      ///< measured / requested - 1
