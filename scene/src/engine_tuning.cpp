@@ -141,6 +141,15 @@ std::optional<Eigen::MatrixXd> jacobian(Solve& s, bool modal, const Eigen::Vecto
   return J;
 }
 
+// A per-joint Jacobian keeps each joint's columns on its own targets' rows only.
+void keep_own_rows(const Solve& s, Eigen::MatrixXd& J) {
+  for (std::size_t u = 0; u < s.unknowns->size(); ++u) {
+    for (std::size_t t = 0; t < s.targets->size(); ++t) {
+      if (!answers_for((*s.unknowns)[u], (*s.targets)[t])) J.block(2 * t, 2 * u, 2, 2).setZero();
+    }
+  }
+}
+
 // The Gauss-Newton step, cut to kMaxLnStiffnessStep / kMaxDampingStep (the whole step scaled, so it keeps
 // its direction).
 Eigen::VectorXd newton_step(const Eigen::MatrixXd& J, const Eigen::VectorXd& r) {
@@ -288,24 +297,37 @@ std::optional<FieldError> engine_tune_scene(const Scene& scene, const RunOptions
     out.targets[t].start_frequency_hz = out.targets[t].requested_frequency_hz * (1.0 + (*r)[2 * t]);
     out.targets[t].start_damping_ratio = out.targets[t].requested_damping_ratio + (*r)[2 * t + 1];
   }
-  while (r && !within_tolerance(*r) && s.runs + n + 1 <= kMaxEngineRuns) {
-    const std::optional<Eigen::MatrixXd> J = jacobian(s, out.modal, x, *r, error);
-    if (error) return error;
-    if (!J) break;
+  // The Jacobian is measured once and then carried by Broyden's update along the accepted steps; it is measured
+  // again only when a step on the carried one fails to lower the residual.
+  std::optional<Eigen::MatrixXd> J;
+  bool fresh = false;
+  while (r && !within_tolerance(*r) && s.runs < kMaxEngineRuns) {
+    if (!J) {
+      if (s.runs + n + 1 > kMaxEngineRuns) break;
+      J = jacobian(s, out.modal, x, *r, error);
+      if (error) return error;
+      if (!J) break;
+      fresh = true;
+    }
     const Eigen::VectorXd dx = newton_step(*J, *r);
     bool accepted = false;
     for (double alpha = 1.0; alpha >= 0.25 && s.runs < kMaxEngineRuns; alpha *= 0.5) {
       std::optional<Eigen::VectorXd> trial = evaluate(s, x + alpha * dx, error);
       if (error) return error;
       if (trial && trial->norm() < r->norm()) {
-        x += alpha * dx;
+        const Eigen::VectorXd step = alpha * dx, change = *trial - *r;
+        *J += (change - *J * step) * step.transpose() / step.squaredNorm();
+        if (!out.modal) keep_own_rows(s, *J);
+        x += step;
         r = trial;
         accepted = true;
         break;
       }
     }
     ++out.iterations;
-    if (!accepted) break;
+    if (!accepted && fresh) break;
+    fresh = false;
+    if (!accepted) J.reset();
   }
   out.runs = s.runs;
   out.converged = r && within_tolerance(*r);
