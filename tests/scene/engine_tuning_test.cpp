@@ -166,6 +166,33 @@ TEST(EngineTuning, VehicleHeaveIsSolvedInTheEngine) {
   EXPECT_NEAR(*out.targets[0].box2d_frequency_hz, 3.0, 0.09);
 }
 
+// run_scene in that engine: the answer's modal groups and the fields to type carry the engine's solve, and the
+// confirming full run (6 s, the motor from 2 s) measures the heave within the solve's tolerance.
+TEST(EngineTuning, TheAnswerCarriesTheEnginesSolve) {
+  const SceneResult r = run_scene(engine_tuning_preset("vehicle"), engine_tuning_in_scaled());
+  ASSERT_FALSE(r.error) << r.error->field << ": " << r.error->rule;
+  ASSERT_TRUE(r.engine_tuning && r.modal_tuning);
+  EXPECT_EQ(r.engine, "box2d_scaled");
+  const JointSpring solved = r.engine_tuning->unknowns.at(0).solved;
+  EXPECT_EQ(r.modal_tuning->groups.at(0).stiffness, solved.stiffness);
+  EXPECT_EQ(r.modal_tuning->groups.at(0).damping, solved.damping);
+  for (std::size_t j = 0; j < r.joint_fields.size(); ++j) {
+    FieldError e;
+    const auto typed = kEngineTuningScaled.parse(engine_tuning_preset("vehicle"), j, r.joint_fields[j], {}, e);
+    ASSERT_TRUE(typed) << e.field;
+    EXPECT_NEAR(typed->stiffness, solved.stiffness, 1e-6 * solved.stiffness);
+    EXPECT_NEAR(typed->damping, solved.damping, 1e-6 * solved.damping);
+  }
+  const EngineTarget& heave = r.engine_tuning->targets.at(0);
+  ASSERT_TRUE(heave.frequency_error && heave.damping_ratio_error);
+  EXPECT_LT(std::abs(*heave.frequency_error), kEngineFrequencyTolerance);
+  EXPECT_LT(std::abs(*heave.damping_ratio_error), kEngineDampingTolerance);
+  ASSERT_TRUE(heave.start_frequency_hz);
+  EXPECT_LT(*heave.start_frequency_hz, 2.8);  // Box2D's springs at 0.6 k are soft in this engine: sqrt(0.6) x 3 Hz
+  EXPECT_TRUE(r.stages.contains(Stage::modal_solve));
+  EXPECT_TRUE(r.stages.contains(Stage::engine_step));
+}
+
 // Per-joint requests: the four hangers of `buddhas` each carry one weight, so each joint's request is its own
 // probe's response; each is solved on its own joint (the Jacobian's columns per joint).
 TEST(EngineTuning, BuddhasHangersAreSolvedPerJoint) {
