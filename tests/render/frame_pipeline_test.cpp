@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -15,6 +16,7 @@
 #include "png_decode.h"
 #include "softtune/render/palette.h"
 #include "softtune/render/oscillator_frames.h"
+#include "softtune/support/run_limit.h"
 
 namespace softtune::render {
 namespace {
@@ -409,4 +411,40 @@ TEST(FramePipeline, AClipOverItsCapIsRefusedBeforeAnyFrameIsMade) {
 }
 
 }  // namespace
+}  // namespace softtune::render
+
+namespace softtune::render {
+
+// A preview's frames are held to PipelineOptions::job_cpu_seconds, summed over the workers' threads and
+// their raster processes: 600 full-HD frames (seconds of work with the real OSMesa backend) under a limit
+// of 0.3 s stop within a frame or two per worker of it, fail with RunStopped (the service's 422), and
+// leave nothing cached; the next job renders normally.
+TEST(FramePipeline, AJobStopsAtItsCpuLimit) {
+  PipelineOptions o;
+  o.job_cpu_seconds = 0.3;
+  FramePipeline p(o);
+  PreviewSettings full_hd;
+  full_hd.frames = caps::kMaxFrames;
+  full_hd.size = {caps::kMaxWidth, caps::kMaxHeight};
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto job = p.submit("full-hd", full_hd, [] { return sliding_box(caps::kMaxFrames); });
+  double spent = 0.0;
+  try {
+    job->wait();
+    ADD_FAILURE() << "600 full-HD frames must pass a 0.3 s limit";
+  } catch (const support::RunStopped& e) {
+    EXPECT_EQ(e.why, support::RunStopped::Why::budget);
+    EXPECT_DOUBLE_EQ(e.limit_seconds, 0.3);
+    spent = e.cpu_seconds;
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_GT(spent, 0.3);
+  EXPECT_LT(spent, 0.6) << "stopped at " << spent << " s of CPU, limit 0.3 s";
+  EXPECT_TRUE(job->progress().failed);
+  EXPECT_FALSE(p.cached(job->id()));
+  std::printf("full-HD preview stopped at %.3f s of CPU (limit 0.3 s) after %.2f s wall\n", spent, wall);
+  // A job within the limit is untouched.
+  EXPECT_EQ(p.submit("small", small(8), [] { return sliding_box(8); })->wait()->frames_png.size(), 8u);
+}
+
 }  // namespace softtune::render
