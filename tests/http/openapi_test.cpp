@@ -112,6 +112,7 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["max_threads"], l::kMaxThreads);
   EXPECT_EQ(x["max_queued_connections"], l::kMaxQueuedConnections);
   EXPECT_EQ(x["max_open_connections"], l::kMaxOpenConnections);
+  EXPECT_EQ(x["max_connections_per_client"], l::kMaxConnectionsPerClient);
   EXPECT_EQ(x["request_read_timeout_ms"], l::kRequestReadTimeout.count());
   EXPECT_EQ(x["min_body_bytes_per_s"], l::kMinBodyBytesPerSecond);
   EXPECT_EQ(x["body_grace_ms"], l::kBodyGrace.count());
