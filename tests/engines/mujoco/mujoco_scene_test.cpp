@@ -1,0 +1,323 @@
+// The MuJoCo 2.2.2 scene backend (engines/mujoco/mujoco_scene.h) in the real engine: one body on one soft joint
+// measured against the analytic oscillator and against MuJoCo's own integrator (semi-implicit Euler, joint
+// damping implicit in mj_Euler), the vehicle on Box2D's suspension k, c (heave, drive, push), every preset built
+// and run (or refused naming a feature), the refusals, and the fields a designer types read back.
+#include "mujoco_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+
+#include "codec/scene_codec.h"
+#include "softtune/designer.h"
+#include "softtune/engines/engine_model.h"
+#include "softtune/engines/mujoco.h"
+#include "softtune/response_fit.h"
+#include "softtune/scene/box2d_scene.h"
+#include "../../presets_dir.h"
+
+namespace softtune::engines {
+namespace {
+
+using scene::BodySettings;
+using scene::JointKind;
+using scene::JointSettings;
+using scene::JointSpring;
+using scene::Scene;
+using scene::SceneBuild;
+
+Scene mjscene_preset(const std::string& name) {
+  std::ifstream in(test_support::kPresets + "/" + name + ".json");
+  return codec::decode_scene(nlohmann::json::parse(in));
+}
+
+BodySettings mjscene_box(const std::string& id, Eigen::Vector2d at, double mass, bool is_static = false) {
+  BodySettings b;
+  b.id = id;
+  b.position = at;
+  b.is_static = is_static;
+  b.shape.width = b.shape.height = 0.5;
+  if (!is_static) b.mass = mass;
+  return b;
+}
+
+struct MjsceneRun {
+  std::vector<scene::BodyState> states;  // body `probe` at every frame, frame 0 first
+};
+
+// Builds `s` in MuJoCo with these springs and records body `probe` for `frames` frames.
+MjsceneRun mjscene_run(const Scene& s, std::vector<std::optional<JointSpring>> springs, std::size_t probe, int frames,
+                       const SettingValues& settings = {}) {
+  SceneBuild b{&s, std::move(springs), settings};
+  std::optional<FieldError> error;
+  auto world = kMujocoSceneBackend.build(b, error);
+  EXPECT_TRUE(world) << (error ? error->field + ": " + error->rule : "");
+  MjsceneRun run;
+  if (!world) return run;
+  run.states.push_back(world->body(probe));
+  for (int f = 0; f < frames; ++f) {
+    world->step_frame(f);
+    run.states.push_back(world->body(probe));
+  }
+  return run;
+}
+
+std::vector<double> mjscene_y(const MjsceneRun& r) {
+  std::vector<double> y;
+  for (const auto& st : r.states) y.push_back(st.centre.y());
+  return y;
+}
+
+// A box of 2 kg hanging from a static box on a distance spring (k, c along the anchor line, rest = the start).
+TEST(MujocoScene, DistanceSpringIsTheOscillatorOfItsKAndC) {
+  Scene s;
+  s.world.fps = 60;
+  s.bodies = {mjscene_box("ceiling", {0, 5}, 0, true), mjscene_box("weight", {0, 3}, 2.0)};
+  JointSettings j;
+  j.id = "spring";
+  j.kind = JointKind::distance;
+  j.body_a = "ceiling";
+  j.body_b = "weight";
+  j.anchor_a = {0, 5};
+  j.anchor_b = {0, 3};
+  s.joints = {j};
+  const double m = 2.0, omega = 2 * std::numbers::pi * 3.0, zeta = 0.2;
+  const JointSpring spring{m * omega * omega, 2 * m * zeta * omega};
+  const double h = 1.0 / 60;
+  const MjsceneRun run = mjscene_run(s, {spring}, 1, 120);
+  const ResponseFit fit = fit_response(mjscene_y(run), h);
+  ASSERT_TRUE(fit.frequency_hz && fit.damping_ratio);
+  // MuJoCo's own step: the tendon's passive spring and damping applied explicitly, semi-implicit Euler
+  // (mujoco_step_map, core/src/engines/mujoco.cpp) -- the discrete poles to round-off.
+  const Prediction model = predict_from_step_map(mujoco_step_map(MujocoIntegrator::euler, spring.damping / m, spring.stiffness / m, h), h);
+  EXPECT_NEAR(*fit.frequency_hz, *model.frequency_hz, 1e-4 * 3.0);
+  EXPECT_NEAR(*fit.damping_ratio, *model.damping_ratio, 1e-4);
+  // The continuous oscillator within the integrator's error at omega h = 0.31 (semi-implicit Euler with the
+  // damping explicit: +3.8 % in frequency at zeta 0.2).
+  EXPECT_NEAR(*fit.frequency_hz, 3.0, 0.05 * 3.0);
+  EXPECT_NEAR(*fit.damping_ratio, zeta, 0.03);
+  // The equilibrium: the rest length plus m g / k below the ceiling.
+  EXPECT_NEAR(*fit.equilibrium, 3.0 - m * 10.0 / spring.stiffness, 1e-6);
+}
+
+// A box on a wheel joint to a static rail, axis up: the slide's passive spring is exact k, c; MuJoCo's Euler
+// applies the joint damping implicitly: (1 + h b) v1 = v0 - h kappa r0, r1 = r0 + h v1 (b = c / m).
+TEST(MujocoScene, WheelSpringIsTheOscillatorOfItsKAndCAndRigidAcross) {
+  Scene s;
+  s.world.fps = 60;
+  s.bodies = {mjscene_box("rail", {0, 0}, 0, true), mjscene_box("cart", {1, 0}, 3.0)};
+  s.bodies[1].angular_velocity = 0.0;
+  JointSettings j;
+  j.id = "suspension";
+  j.kind = JointKind::wheel;
+  j.body_a = "rail";
+  j.body_b = "cart";
+  j.anchor_b = {1, 0};
+  j.axis = {0, 1};
+  s.joints = {j};
+  const double m = 3.0, omega = 2 * std::numbers::pi * 2.0, zeta = 0.3, h = 1.0 / 60;
+  const JointSpring spring{m * omega * omega, 2 * m * zeta * omega};
+  const MjsceneRun run = mjscene_run(s, {spring}, 1, 120);
+  const ResponseFit fit = fit_response(mjscene_y(run), h);
+  ASSERT_TRUE(fit.frequency_hz && fit.damping_ratio);
+  const double beta = spring.damping / m, kappa = spring.stiffness / m, g = 1.0 / (1.0 + h * beta);
+  Eigen::Matrix2d step;
+  step << 1.0 - h * h * kappa * g, h * g, -h * kappa * g, g;
+  const Prediction model = predict_from_step_map(step, h);
+  EXPECT_NEAR(*fit.frequency_hz, *model.frequency_hz, 1e-4 * 2.0);
+  EXPECT_NEAR(*fit.damping_ratio, *model.damping_ratio, 1e-4);
+  EXPECT_NEAR(*fit.frequency_hz, 2.0, 0.03 * 2.0);
+  EXPECT_NEAR(*fit.damping_ratio, zeta, 0.03);
+  EXPECT_NEAR(*fit.equilibrium, -m * 10.0 / spring.stiffness, 1e-6);
+  for (const auto& st : run.states) EXPECT_NEAR(st.centre.x(), 1.0, 1e-9);  // rigid across the axis
+}
+
+
+// The springs Box2D 2.4 needs for the vehicle's 3 Hz, zeta 0.5 heave (the modal solve at 60 fps).
+constexpr JointSpring kMjsceneSuspension{24842.07, 914.753};
+
+std::size_t mjscene_body(const Scene& s, const std::string& id) {
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    if (s.bodies[i].id == id) return i;
+  }
+  return s.bodies.size();
+}
+
+// The chassis centre's y over frames [0, 2 s] in Box2D 2.4 with the suspension typed as k, c.
+std::vector<double> mjscene_box2d_heave(Scene s, double& ms) {
+  s.modal_tuning.reset();
+  for (JointSettings& j : s.joints) {
+    j.tuning.reset();
+    j.typed = scene::TypedSpring{kMjsceneSuspension.stiffness, kMjsceneSuspension.damping};
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  scene::Box2DScene world(s, s.mass_model);
+  EXPECT_FALSE(world.error());
+  const b2Body* chassis = world.bodies()[mjscene_body(s, "chassis")];
+  std::vector<double> y{chassis->GetWorldCenter().y};
+  const int frames = scene::frame_count(s.world);
+  for (int f = 0; f < frames; ++f) {
+    world.step_frame(f);
+    if (f < 120) y.push_back(chassis->GetWorldCenter().y);
+  }
+  ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return y;
+}
+
+TEST(MujocoScene, VehicleSettlesHeavesNearThreeHertzAndDrivesIntoTheBoxes) {
+  const Scene s = mjscene_preset("vehicle");
+  SceneBuild b{&s, {kMjsceneSuspension, kMjsceneSuspension}, {}};
+  std::optional<FieldError> error;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto world = kMujocoSceneBackend.build(b, error);
+  ASSERT_TRUE(world) << error->field << ": " << error->rule;
+  const std::size_t chassis = mjscene_body(s, "chassis");
+  std::vector<double> heave{world->body(chassis).centre.y()};
+  std::vector<Eigen::Vector2d> box_start;
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    if (s.bodies[i].id.rfind("box_", 0) == 0) box_start.push_back(world->body(i).centre);
+  }
+  const int frames = scene::frame_count(s.world);
+  double pushed = 0.0;
+  for (int f = 0; f < frames; ++f) {
+    world->step_frame(f);
+    const scene::BodyState c = world->body(chassis);
+    ASSERT_TRUE(std::isfinite(c.centre.x()) && std::isfinite(c.centre.y()) && std::isfinite(c.angle)) << f;
+    if (f < 120) heave.push_back(c.centre.y());
+  }
+  const double mujoco_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    if (s.bodies[i].id.rfind("box_", 0) == 0) pushed = std::max(pushed, world->body(i).centre.x() - box_start[k++].x());
+  }
+  const double h = 1.0 / s.world.fps;
+  const ResponseFit fit = fit_response(heave, h);
+  double box2d_ms = 0.0;
+  const ResponseFit box2d = fit_response(mjscene_box2d_heave(s, box2d_ms), h);
+  ASSERT_TRUE(fit.frequency_hz && fit.damping_ratio && box2d.frequency_hz && box2d.damping_ratio);
+  std::printf("vehicle heave on k %.2f, c %.3f: mujoco %.3f Hz zeta %.3f; box2d_v2_4 %.3f Hz zeta %.3f\n",
+              kMjsceneSuspension.stiffness, kMjsceneSuspension.damping, *fit.frequency_hz, *fit.damping_ratio,
+              *box2d.frequency_hz, *box2d.damping_ratio);
+  std::printf("vehicle run, 6 s at 60 fps: mujoco %.1f ms, box2d_v2_4 %.1f ms (ratio %.2f)\n", mujoco_ms, box2d_ms,
+              mujoco_ms / box2d_ms);
+  // Settled on its wheels: the chassis rests near where it starts (the tyres and the road are MuJoCo-soft).
+  EXPECT_NEAR(*fit.equilibrium, s.bodies[chassis].position.y(), 0.05);
+  // A damped oscillation near 3 Hz. Not Box2D's 3.00 Hz / 0.50: these k, c are what Box2D's soft step needs
+  // (its implicit Euler adds about omega h / 2 of damping); MuJoCo steps the springs semi-implicitly (the
+  // joint damping implicit) and its tyres are soft contacts: 2.97 Hz, zeta 0.27 at 60 fps, 3.43 Hz, 0.35 at
+  // 8 substeps, against 3.24 Hz, 0.375 for the continuous chassis on rigid tyres.
+  EXPECT_NEAR(*fit.frequency_hz, 3.0, 0.1 * 3.0);
+  EXPECT_GT(*fit.damping_ratio, 0.15);
+  EXPECT_LT(*fit.damping_ratio, 0.6);
+  // The motor from 2 s drives it right, into the stack at x = 9.
+  const scene::BodyState end = world->body(chassis);
+  EXPECT_GT(end.centre.x() - s.bodies[chassis].position.x(), 5.0);
+  EXPECT_GT(pushed, 0.05);
+}
+
+// Each preset with Box2D's own tuning of its joints: built and run finite for its whole duration, or refused
+// naming the feature and the engine.
+// Each preset with Box2D's own tuning of its joints: built and run finite for its whole duration, or refused
+// naming the feature and the engine.
+TEST(MujocoScene, DISABLED_Probe) {
+  for (int sub : {1, 2, 4, 8}) {
+    Scene s = mjscene_preset("vehicle");
+    s.world.substeps = sub;
+    const MjsceneRun run = mjscene_run(s, {kMjsceneSuspension, kMjsceneSuspension}, 1, 120);
+    const ResponseFit fit = fit_response(mjscene_y(run), 1.0 / 60);
+    std::printf("substeps %d: %.3f Hz zeta %.3f eq %.4f\n", sub, *fit.frequency_hz, *fit.damping_ratio, *fit.equilibrium);
+  }
+}
+
+TEST(MujocoScene, EveryPresetRunsFiniteOrIsRefusedNamingTheFeature) {
+  for (const char* name : {"bridge", "bridge_deck", "buddhas", "chain", "heavy_on_light", "mouse", "stiff",
+                           "vehicle", "vehicle_per_spring"}) {
+    const Scene s = mjscene_preset(name);
+    scene::Box2DScene box2d(s, s.mass_model);
+    ASSERT_FALSE(box2d.error()) << name;
+    std::vector<std::optional<JointSpring>> springs;
+    for (const scene::JointTuning& t : box2d.tunings()) {
+      springs.push_back(t.stiffness > 0.0 ? std::optional<JointSpring>(JointSpring{t.stiffness, t.damping}) : std::nullopt);
+    }
+    SceneBuild b{&s, springs, {}};
+    std::optional<FieldError> error;
+    auto world = kMujocoSceneBackend.build(b, error);
+    if (!world) {
+      ASSERT_TRUE(error) << name;
+      EXPECT_NE(error->rule.find("mujoco"), std::string::npos) << name << ": " << error->rule;
+      std::printf("%s: refused, %s: %s\n", name, error->field.c_str(), error->rule.c_str());
+      continue;
+    }
+    const int frames = scene::frame_count(s.world);
+    for (int f = 0; f < frames; ++f) world->step_frame(f);
+    if (std::string(name) == "stiff") {
+      // The preset's point: a 20 Hz spring at 60 fps (omega h = 2.1) blows up on semi-implicit Euler, which is
+      // how MuJoCo steps a passive tendon spring; the backend reports the blow-up (NaN), not MuJoCo's reset.
+      EXPECT_FALSE(std::isfinite(world->body(1).centre.y()));
+      EXPECT_EQ(world->body(0).centre.y(), s.bodies[0].position.y());  // the static anchor stays put
+      continue;
+    }
+    for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+      const scene::BodyState st = world->body(i);
+      EXPECT_TRUE(std::isfinite(st.centre.x()) && std::isfinite(st.centre.y()) && std::isfinite(st.angle))
+          << name << " " << s.bodies[i].id;
+      EXPECT_GT(st.centre.y(), s.world.bounds[1]) << name << " " << s.bodies[i].id << ": fell out of the world";
+    }
+    std::printf("%s: %d frames run in mujoco\n", name, frames);
+  }
+}
+
+TEST(MujocoScene, RefusesWhatMujocoCannotRepresentNamingTheFieldAndEngine) {
+  Scene s = mjscene_preset("vehicle");
+  s.bodies[4].restitution = 0.5;
+  SceneBuild b{&s, {kMjsceneSuspension, kMjsceneSuspension}, {}};
+  std::optional<FieldError> error;
+  EXPECT_FALSE(kMujocoSceneBackend.build(b, error));
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->field, "bodies.4.restitution");
+  EXPECT_NE(error->rule.find("mujoco"), std::string::npos) << error->rule;
+
+  // A wheel cannot nest a body another wheel already nests (MuJoCo's tree has one parent per body).
+  Scene twice = mjscene_preset("vehicle");
+  twice.joints[1].body_b = twice.joints[0].body_b;
+  twice.joints[1].anchor_b = twice.joints[0].anchor_b;
+  SceneBuild b2{&twice, {kMjsceneSuspension, kMjsceneSuspension}, {}};
+  error.reset();
+  EXPECT_FALSE(kMujocoSceneBackend.build(b2, error));
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->field, "joints.1.body_b");
+  EXPECT_NE(error->rule.find("mujoco"), std::string::npos) << error->rule;
+  EXPECT_FALSE(mujoco_scene_mjcf(b2, error).size());
+}
+
+TEST(MujocoScene, TypedFieldsReadBackAndAMissingOneIsNamed) {
+  Scene s;
+  s.bodies = {mjscene_box("a", {0, 0}, 0, true), mjscene_box("b", {0, -1}, 1.0)};
+  for (JointKind kind : {JointKind::distance, JointKind::wheel, JointKind::weld, JointKind::mouse}) {
+    JointSettings j;
+    j.id = "j";
+    j.kind = kind;
+    j.body_a = kind == JointKind::mouse ? "" : "a";
+    j.body_b = "b";
+    j.anchor_b = {0, -1};
+    s.joints = {j};
+    const JointSpring spring{1234.5, 67.25};
+    const Parameters typed = kMujocoSceneBackend.fields(s, 0, spring, {});
+    ASSERT_GE(typed.size(), 2u);
+    FieldError error;
+    const std::optional<JointSpring> back = kMujocoSceneBackend.parse(s, 0, typed, {}, error);
+    ASSERT_TRUE(back) << error.field << ": " << error.rule;
+    EXPECT_EQ(back->stiffness, spring.stiffness);
+    EXPECT_EQ(back->damping, spring.damping);
+    const Parameters missing(typed.begin() + 1, typed.end());
+    EXPECT_FALSE(kMujocoSceneBackend.parse(s, 0, missing, {}, error));
+    EXPECT_EQ(error.field, std::string(typed[0].name));
+    EXPECT_NE(error.rule.find("missing"), std::string::npos) << error.rule;
+  }
+}
+
+}  // namespace
+}  // namespace softtune::engines
