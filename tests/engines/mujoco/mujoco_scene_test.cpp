@@ -65,6 +65,43 @@ MjsceneRun mjscene_run(const Scene& s, std::vector<std::optional<JointSpring>> s
   return run;
 }
 
+// A static body at `fixed` and a dynamic box of `mass` at `moving` joined by one joint of `kind` (anchors at the
+// bodies' centres; a mouse joint has no body_a).
+Scene mjscene_pair(JointKind kind, Eigen::Vector2d fixed, Eigen::Vector2d moving, double mass) {
+  Scene s;
+  s.world.fps = 60;
+  s.bodies = {mjscene_box("fixed", fixed, 0, true), mjscene_box("moving", moving, mass)};
+  JointSettings j;
+  j.id = "joint";
+  j.kind = kind;
+  j.body_a = kind == JointKind::mouse ? "" : "fixed";
+  j.body_b = "moving";
+  j.anchor_a = kind == JointKind::weld ? moving : fixed;
+  j.anchor_b = moving;
+  s.joints = {j};
+  return s;
+}
+
+// mj_Euler's step of one coordinate whose spring (kappa = k / m) is applied explicitly and whose damping
+// (beta = c / m, a joint's dof_damping) implicitly: (1 + h beta) v1 = v0 - h kappa r0, r1 = r0 + h v1.
+Prediction mjscene_implicit_damping(double beta, double kappa, double h) {
+  const double g = 1.0 / (1.0 + h * beta);
+  Eigen::Matrix2d step;
+  step << 1.0 - h * h * kappa * g, h * g, -h * kappa * g, g;
+  return predict_from_step_map(step, h);
+}
+
+// A joint's fitted response against mj_Euler's step of it (to 1e-4) and the continuous oscillator (3 %, 0.03).
+void mjscene_expect_implicit_damping(const ResponseFit& fit, const JointSpring& spring, double mass, double h,
+                                     double frequency_hz, double zeta) {
+  ASSERT_TRUE(fit.frequency_hz && fit.damping_ratio);
+  const Prediction model = mjscene_implicit_damping(spring.damping / mass, spring.stiffness / mass, h);
+  EXPECT_NEAR(*fit.frequency_hz, *model.frequency_hz, 1e-4 * frequency_hz);
+  EXPECT_NEAR(*fit.damping_ratio, *model.damping_ratio, 1e-4);
+  EXPECT_NEAR(*fit.frequency_hz, frequency_hz, 0.03 * frequency_hz);
+  EXPECT_NEAR(*fit.damping_ratio, zeta, 0.03);
+}
+
 std::vector<double> mjscene_y(const MjsceneRun& r) {
   std::vector<double> y;
   for (const auto& st : r.states) y.push_back(st.centre.y());
@@ -73,17 +110,7 @@ std::vector<double> mjscene_y(const MjsceneRun& r) {
 
 // A box of 2 kg hanging from a static box on a distance spring (k, c along the anchor line, rest = the start).
 TEST(MujocoScene, DistanceSpringIsTheOscillatorOfItsKAndC) {
-  Scene s;
-  s.world.fps = 60;
-  s.bodies = {mjscene_box("ceiling", {0, 5}, 0, true), mjscene_box("weight", {0, 3}, 2.0)};
-  JointSettings j;
-  j.id = "spring";
-  j.kind = JointKind::distance;
-  j.body_a = "ceiling";
-  j.body_b = "weight";
-  j.anchor_a = {0, 5};
-  j.anchor_b = {0, 3};
-  s.joints = {j};
+  const Scene s = mjscene_pair(JointKind::distance, {0, 5}, {0, 3}, 2.0);
   const double m = 2.0, omega = 2 * std::numbers::pi * 3.0, zeta = 0.2;
   const JointSpring spring{m * omega * omega, 2 * m * zeta * omega};
   const double h = 1.0 / 60;
@@ -106,35 +133,85 @@ TEST(MujocoScene, DistanceSpringIsTheOscillatorOfItsKAndC) {
 // A box on a wheel joint to a static rail, axis up: the slide's passive spring is exact k, c; MuJoCo's Euler
 // applies the joint damping implicitly: (1 + h b) v1 = v0 - h kappa r0, r1 = r0 + h v1 (b = c / m).
 TEST(MujocoScene, WheelSpringIsTheOscillatorOfItsKAndCAndRigidAcross) {
-  Scene s;
-  s.world.fps = 60;
-  s.bodies = {mjscene_box("rail", {0, 0}, 0, true), mjscene_box("cart", {1, 0}, 3.0)};
-  s.bodies[1].angular_velocity = 0.0;
-  JointSettings j;
-  j.id = "suspension";
-  j.kind = JointKind::wheel;
-  j.body_a = "rail";
-  j.body_b = "cart";
-  j.anchor_b = {1, 0};
-  j.axis = {0, 1};
-  s.joints = {j};
+  Scene s = mjscene_pair(JointKind::wheel, {0, 0}, {1, 0}, 3.0);
+  s.joints[0].axis = {0, 1};
   const double m = 3.0, omega = 2 * std::numbers::pi * 2.0, zeta = 0.3, h = 1.0 / 60;
   const JointSpring spring{m * omega * omega, 2 * m * zeta * omega};
   const MjsceneRun run = mjscene_run(s, {spring}, 1, 120);
   const ResponseFit fit = fit_response(mjscene_y(run), h);
-  ASSERT_TRUE(fit.frequency_hz && fit.damping_ratio);
-  const double beta = spring.damping / m, kappa = spring.stiffness / m, g = 1.0 / (1.0 + h * beta);
-  Eigen::Matrix2d step;
-  step << 1.0 - h * h * kappa * g, h * g, -h * kappa * g, g;
-  const Prediction model = predict_from_step_map(step, h);
-  EXPECT_NEAR(*fit.frequency_hz, *model.frequency_hz, 1e-4 * 2.0);
-  EXPECT_NEAR(*fit.damping_ratio, *model.damping_ratio, 1e-4);
-  EXPECT_NEAR(*fit.frequency_hz, 2.0, 0.03 * 2.0);
-  EXPECT_NEAR(*fit.damping_ratio, zeta, 0.03);
+  mjscene_expect_implicit_damping(fit, spring, m, h, 2.0, zeta);
   EXPECT_NEAR(*fit.equilibrium, -m * 10.0 / spring.stiffness, 1e-6);
   for (const auto& st : run.states) EXPECT_NEAR(st.centre.x(), 1.0, 1e-9);  // rigid across the axis
 }
 
+// A soft weld: body_b turns on a hinge at the anchor (its centre) with the spring in N m/rad on its inertia.
+TEST(MujocoScene, SoftWeldIsTheAngularOscillatorOfItsKAndC) {
+  Scene s = mjscene_pair(JointKind::weld, {0, 0}, {1, 0}, 2.0);
+  s.world.gravity = {0, 0};
+  s.bodies[1].angular_velocity = 1.0;
+  const double inertia = 2.0 * (0.25 + 0.25) / 12, omega = 2 * std::numbers::pi * 2.0, zeta = 0.1, h = 1.0 / 60;
+  const JointSpring spring{inertia * omega * omega, 2 * inertia * zeta * omega};
+  const MjsceneRun run = mjscene_run(s, {spring}, 1, 120);
+  std::vector<double> angle;
+  for (const auto& st : run.states) angle.push_back(st.angle);
+  const ResponseFit fit = fit_response(angle, h);
+  mjscene_expect_implicit_damping(fit, spring, inertia, h, 2.0, zeta);
+  for (const auto& st : run.states) EXPECT_NEAR((st.centre - Eigen::Vector2d(1, 0)).norm(), 0.0, 1e-9);
+}
+
+// A rigid distance rod (no spring) holds its rest length, the starting distance or `length`, as a pendulum
+// swings under gravity: MuJoCo's tendon equality is soft (solref 0.02 1 raised to 2 timestep), so within 2 cm.
+TEST(MujocoScene, RigidRodHoldsItsRestLength) {
+  for (double length : {1.0, 1.2}) {
+    Scene s = mjscene_pair(JointKind::distance, {0, 5}, {1, 5}, 1.0);
+    s.joints[0].length = length;
+    const MjsceneRun run = mjscene_run(s, {std::nullopt}, 1, 120);
+    double lowest = 5.0;
+    for (std::size_t f = 30; f < run.states.size(); ++f) {
+      EXPECT_NEAR((run.states[f].centre - Eigen::Vector2d(0, 5)).norm(), length, 0.02) << f;
+      lowest = std::min(lowest, run.states[f].centre.y());
+    }
+    EXPECT_LT(lowest, 5.0 - 0.9 * length);  // it swung down
+  }
+}
+
+// A mouse joint's pull is capped at max_force like b2MouseJoint's: a 1 kg box 1 m from its target on a
+// 100 N/m spring capped at 5 N accelerates at 5 m/s^2, not 100.
+TEST(MujocoScene, MousePullIsCappedAtMaxForce) {
+  Scene s = mjscene_pair(JointKind::mouse, {0, 3}, {0, 0}, 1.0);
+  s.world.gravity = {0, 0};
+  s.joints[0].target = {1, 0};
+  s.joints[0].max_force = 5.0;
+  const MjsceneRun run = mjscene_run(s, {JointSpring{100.0, 1.0}}, 1, 12);
+  EXPECT_NEAR(run.states.back().velocity.x(), 5.0 * 12 / 60.0, 1e-6);
+  EXPECT_NEAR(run.states.back().velocity.y(), 0.0, 1e-9);
+}
+
+// Box2D's friction mix sqrt(fa fb), not MuJoCo's max: a crate (0.6) on a road (0.9) tilted 40 degrees slides
+// down at g (sin 40 - sqrt(0.54) cos 40) = 0.80 m/s^2; with the max (0.9 > tan 40 = 0.84) it would stick. (A
+// crate launched fast along a flat road would not do: MuJoCo's soft friction at a 3 m/s slip pushes the
+// crate off the road in one step.)
+TEST(MujocoScene, FrictionMixesAsBox2DsSquareRoot) {
+  const double tilt = 40.0 * std::numbers::pi / 180.0;
+  const Eigen::Vector2d normal(-std::sin(tilt), std::cos(tilt)), down(-std::cos(tilt), -std::sin(tilt));
+  Scene s;
+  s.world.fps = 60;
+  s.bodies = {mjscene_box("road", {0, 0}, 0, true), mjscene_box("crate", 0.75 * normal, 4.0)};
+  s.bodies[0].shape.width = 40;
+  s.bodies[0].shape.height = 1;
+  s.bodies[0].friction = 0.9;
+  s.bodies[0].angle = s.bodies[1].angle = tilt;
+  s.bodies[1].friction = 0.6;
+  const MjsceneRun run = mjscene_run(s, {}, 1, 60);
+  auto along = [&](int f) { return (run.states[f].centre - s.bodies[1].position).dot(down); };
+  // From 0.25 s (the contact has settled), three points 0.35 s apart: s2 - 2 s1 = a dt^2.
+  const double dt = 0.35, s0 = along(15), s1 = along(36) - s0, s2 = along(57) - s0;
+  const double accel = (s2 - 2.0 * s1) / (dt * dt);
+  // The friction coefficient the slide shows: a = g (sin - mu cos). MuJoCo's friction is soft (a slip
+  // velocity grows with the force), so it reads a little below the mix: 0.723 for 0.735.
+  const double mu = (std::sin(tilt) - accel / 10.0) / std::cos(tilt);
+  EXPECT_NEAR(mu, std::sqrt(0.6 * 0.9), 0.02);
+}
 
 // The springs Box2D 2.4 needs for the vehicle's 3 Hz, zeta 0.5 heave (the modal solve at 60 fps).
 constexpr JointSpring kMjsceneSuspension{24842.07, 914.753};
