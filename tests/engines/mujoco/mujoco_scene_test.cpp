@@ -356,18 +356,6 @@ TEST(MujocoScene, VehicleSettlesHeavesNearThreeHertzAndDrivesIntoTheBoxes) {
 
 // Each preset with Box2D's own tuning of its joints: built and run finite for its whole duration, or refused
 // naming the feature and the engine.
-// Each preset with Box2D's own tuning of its joints: built and run finite for its whole duration, or refused
-// naming the feature and the engine.
-TEST(MujocoScene, DISABLED_Probe) {
-  for (int sub : {1, 2, 4, 8}) {
-    Scene s = mjscene_preset("vehicle");
-    s.world.substeps = sub;
-    const MjsceneRun run = mjscene_run(s, {kMjsceneSuspension, kMjsceneSuspension}, 1, 120);
-    const ResponseFit fit = fit_response(mjscene_y(run), 1.0 / 60);
-    std::printf("substeps %d: %.3f Hz zeta %.3f eq %.4f\n", sub, *fit.frequency_hz, *fit.damping_ratio, *fit.equilibrium);
-  }
-}
-
 TEST(MujocoScene, EveryPresetRunsFiniteOrIsRefusedNamingTheFeature) {
   for (const char* name : {"bridge", "bridge_deck", "buddhas", "chain", "heavy_on_light", "mouse", "stiff",
                            "vehicle", "vehicle_per_spring"}) {
