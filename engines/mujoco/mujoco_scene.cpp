@@ -162,6 +162,15 @@ struct Site {
   Eigen::Vector2d world;
 };
 
+// The velocity servo's gain: the wheel's inertia about its hinge over the step, so a free wheel reaches the
+// motor speed in one step (a deadbeat servo, stable for any larger load: MuJoCo applies it explicitly).
+double motor_gain(const Scene& s, const JointSettings& j, double h) {
+  const BodySettings& b = s.bodies[index_of(s, j.body_b)];
+  const scene::MassData md = scene::body_mass(b);
+  const Eigen::Vector2d com = b.position + rotate(md.local_centre, b.angle);
+  return (md.inertia + md.mass * (j.anchor_b - com).squaredNorm()) / h;
+}
+
 class Writer {
  public:
   Writer(const SceneBuild& b, const Tree& t) : b_(b), s_(*b.scene), t_(t), sites_(s_.bodies.size()) {}
@@ -333,7 +342,7 @@ class Writer {
       const std::string id = xml_text(j.id);
       if (j.kind == JointKind::wheel && j.max_motor_torque > 0.0 && !t_.hinge[index_of(s_, j.body_b)].empty()) {
         a << "    <velocity name=\"" << id << "/motor\" joint=\"" << id << "/spin\" kv=\""
-          << motor_gain(j, h) << "\" forcelimited=\"true\" forcerange=\"" << -j.max_motor_torque << ' '
+          << motor_gain(s_, j, h) << "\" forcelimited=\"true\" forcerange=\"" << -j.max_motor_torque << ' '
           << j.max_motor_torque << "\"/>\n";
       } else if (j.kind == JointKind::mouse) {
         const scene::JointSpring spring = b_.springs[i].value_or(scene::JointSpring{});
@@ -372,16 +381,6 @@ class Writer {
     if (!c.str().empty()) o << "  <contact>\n" << c.str() << "  </contact>\n";
   }
 
- public:
-  // The velocity servo's gain: the wheel's inertia about its hinge over the step, so a free wheel reaches the
-  // motor speed in one step (a deadbeat servo, stable for any larger load: MuJoCo applies it explicitly).
-  double motor_gain(const JointSettings& j, double h) const {
-    const BodySettings& b = s_.bodies[index_of(s_, j.body_b)];
-    const scene::MassData md = scene::body_mass(b);
-    const Eigen::Vector2d com = b.position + rotate(md.local_centre, b.angle);
-    return (md.inertia + md.mass * (j.anchor_b - com).squaredNorm()) / h;
-  }
-
  private:
   const SceneBuild& b_;
   const Scene& s_;
@@ -409,12 +408,11 @@ class MujocoWorld final : public scene::SceneWorld {
       }
     }
     const double h = step_size(s.world.fps, s.world.substeps);
-    Writer gains(build, tree);
     for (const JointSettings& j : s.joints) {
       if (j.kind != JointKind::wheel || j.max_motor_torque <= 0.0) continue;
       const int a = mj_name2id(m_, mjOBJ_ACTUATOR, (j.id + "/motor").c_str());
       if (a < 0) continue;
-      motors_.push_back({a, gains.motor_gain(j, h), j.motor_speed, j.motor_start_s});
+      motors_.push_back({a, motor_gain(s, j, h), j.motor_speed, j.motor_start_s});
       m_->actuator_gainprm[a * mjNGAIN] = 0.0;  // off until motor_start_s
       m_->actuator_biasprm[a * mjNBIAS + 2] = 0.0;
     }

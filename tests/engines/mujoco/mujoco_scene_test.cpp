@@ -371,19 +371,56 @@ TEST(MujocoScene, VehicleHeaveAtFineStepsIsTheContinuousChassisOnItsSprings) {
   EXPECT_LT(*fit.residual, 1e-3);  // one clean mode
 }
 
+// The springs Box2D 2.4 gives the scene's joints from their own tunings (the modal solve aside).
+std::vector<std::optional<JointSpring>> mjscene_box2d_springs(const Scene& s) {
+  scene::Box2DScene box2d(s, s.mass_model);
+  EXPECT_FALSE(box2d.error()) << s.name;
+  std::vector<std::optional<JointSpring>> springs;
+  for (const scene::JointTuning& t : box2d.tunings()) {
+    springs.push_back(t.stiffness > 0.0 ? std::optional<JointSpring>(JointSpring{t.stiffness, t.damping}) : std::nullopt);
+  }
+  return springs;
+}
+
+// Revolute pins are hinges of MuJoCo's tree, exactly rigid: the chain's anchors coincide to round-off after its
+// whole swing; the bridge's pin to its right bank closes a loop and is an <equality><connect>, MuJoCo-soft (1.4 cm under the loaded bridge).
+TEST(MujocoScene, RevolutePinsAreRigidHingesAndTheLoopClosingPinAConnect) {
+  for (const char* name : {"chain", "bridge"}) {
+    const Scene s = mjscene_preset(name);
+    SceneBuild b{&s, mjscene_box2d_springs(s), {}};
+    std::optional<FieldError> error;
+    auto world = kMujocoSceneBackend.build(b, error);
+    ASSERT_TRUE(world) << name;
+    for (int f = 0; f < scene::frame_count(s.world); ++f) world->step_frame(f);
+    double worst = 0.0, loop = 0.0;
+    for (std::size_t i = 0; i < s.joints.size(); ++i) {
+      const JointSettings& j = s.joints[i];
+      if (j.kind != JointKind::revolute) continue;
+      const std::size_t a = mjscene_body(s, j.body_a), bb = mjscene_body(s, j.body_b);
+      // The anchor carried by each body from the start: rotate its offset from the body origin.
+      auto carried = [&](std::size_t body) {
+        const scene::BodyState st = world->body(body);
+        const BodySettings& start = s.bodies[body];
+        return Eigen::Vector2d(st.origin + Eigen::Rotation2Dd(st.angle - start.angle) * (j.anchor_a - start.position));
+      };
+      const double gap = (carried(a) - carried(bb)).norm();
+      // A static body_b cannot be nested: the bridge's pin to its right bank is the connect.
+      double& bound = s.bodies[bb].is_static ? loop : worst;
+      bound = std::max(bound, gap);
+    }
+    std::printf("%s: nested pins' largest gap %.2e m, the loop-closing connect's %.2e m\n", name, worst, loop);
+    EXPECT_LT(worst, 1e-9) << name;
+    EXPECT_LT(loop, 0.03) << name;  // 1.4 cm at the end of the bridge run: solref 0.02 raised to 2 timestep
+  }
+}
+
 // Each preset with Box2D's own tuning of its joints: built and run finite for its whole duration, or refused
 // naming the feature and the engine.
 TEST(MujocoScene, EveryPresetRunsFiniteOrIsRefusedNamingTheFeature) {
   for (const char* name : {"bridge", "bridge_deck", "buddhas", "chain", "heavy_on_light", "mouse", "stiff",
                            "vehicle", "vehicle_per_spring"}) {
     const Scene s = mjscene_preset(name);
-    scene::Box2DScene box2d(s, s.mass_model);
-    ASSERT_FALSE(box2d.error()) << name;
-    std::vector<std::optional<JointSpring>> springs;
-    for (const scene::JointTuning& t : box2d.tunings()) {
-      springs.push_back(t.stiffness > 0.0 ? std::optional<JointSpring>(JointSpring{t.stiffness, t.damping}) : std::nullopt);
-    }
-    SceneBuild b{&s, springs, {}};
+    SceneBuild b{&s, mjscene_box2d_springs(s), {}};
     std::optional<FieldError> error;
     auto world = kMujocoSceneBackend.build(b, error);
     if (!world) {
