@@ -12,13 +12,14 @@
 //     stiffness / damping the spring's k, c exactly: MuJoCo's passive joint spring, springref 0 at the start)
 //     and a hinge "<joint id>/spin" at anchor_b for the free rotation; the motor is a <velocity> actuator
 //     "<joint id>/motor" on that hinge (kv = the wheel's inertia / timestep, forcerange = +-max_motor_torque),
-//     switched on at motor_start_s (the backend writes kv into actuator_gainprm / biasprm then; the MJCF has
-//     it on from the start, ctrl = motor_speed);
+//     switched on at motor_start_s (until then the backend zeroes its actuator_gainprm / biasprm, then
+//     writes kv back and sets ctrl = motor_speed; in the MJCF as written the servo holds ctrl 0 from the start);
 //   - a weld nests body_b in body_a: with a spring, a hinge at the anchor with stiffness / damping (N m/rad,
 //     N m s/rad: exact); without, no joint at all (welded: exactly rigid);
 //   - a revolute nests body_b in body_a with a hinge at the anchor (exactly rigid); where body_b cannot be
-//     nested (it already has a parent, it is static, or nesting would close a loop: the bridge's last pin)
-//     it is an <equality><connect> instead, which MuJoCo keeps soft (solref 0.02 1, raised to 2 timestep);
+//     nested (it already has a parent, it is static -- the bridge's pin to its right bank --, or nesting would
+//     close a loop) it is an <equality><connect> instead, which MuJoCo keeps soft (solref 0.02 1, raised to
+//     2 timestep: the loaded bridge's connect ends 1.4 cm apart);
 //   - every other dynamic body is a child of the world with slide x, slide z and a hinge (none when
 //     fixed_rotation); a static body is a child of the world without joints;
 //   - a distance joint with a spring is a spatial tendon "<joint id>" between sites at the anchors with
@@ -37,7 +38,8 @@
 // collide_connected false is a <contact><exclude> of the two bodies (filterparent is disabled, so a nested
 // pair with collide_connected true does collide). MuJoCo has no restitution: a non-zero one is refused
 // (bodies.N.restitution), as is allow_sleeping (2.2.2 has no sleeping). The contacts themselves are MuJoCo's
-// soft ones (solref 0.02 1 raised to 2 timestep): tyres sink a few millimetres into the road.
+// soft ones (solref 0.02 1 raised to 2 timestep), without Box2D's contact skin: the vehicle preset's tyres,
+// placed where Box2D's skin holds them, start 5 mm above the road and land.
 // Step: timestep = 1 / (fps substeps), world.substeps mj_step calls per frame. If MuJoCo finds a bad qacc it
 // resets the state (mj_checkAcc): the backend then reports NaN bodies instead of the reset pose.
 //

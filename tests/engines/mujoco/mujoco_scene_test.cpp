@@ -140,6 +140,26 @@ TEST(MujocoScene, DistanceSpringIsTheOscillatorOfItsKAndC) {
   EXPECT_NEAR(*fit.equilibrium, 3.0 - m * 10.0 / spring.stiffness, 1e-6);
 }
 
+// The integrator setting is MuJoCo's: RK4 steps the tendon spring as classic RK4 (mujoco_step_map), implicit
+// takes the tendon damping into the velocity derivative as mj_Euler does a joint's.
+TEST(MujocoScene, IntegratorSettingIsMujocosOwn) {
+  const Scene s = mjscene_pair(JointKind::distance, {0, 5}, {0, 3}, 2.0);
+  const double m = 2.0, omega = 2 * std::numbers::pi * 3.0, zeta = 0.2, h = 1.0 / 60;
+  const JointSpring spring{m * omega * omega, 2 * m * zeta * omega};
+  for (int integrator : {1, 2}) {
+    SettingValues settings;
+    for (const SettingSpec& spec : kMujocoSceneBackend.settings) settings.push_back(spec.default_value);
+    settings[kMujocoSceneIntegrator] = integrator;
+    const ResponseFit fit = fit_response(mjscene_y(mjscene_run(s, {spring}, 1, 120, settings)), h);
+    ASSERT_TRUE(fit.frequency_hz && fit.damping_ratio);
+    const Prediction model =
+        integrator == 1 ? predict_from_step_map(mujoco_step_map(MujocoIntegrator::rk4, spring.damping / m, spring.stiffness / m, h), h)
+                        : mjscene_implicit_damping(spring.damping / m, spring.stiffness / m, h);
+    EXPECT_NEAR(*fit.frequency_hz, *model.frequency_hz, 1e-4 * 3.0) << integrator;
+    EXPECT_NEAR(*fit.damping_ratio, *model.damping_ratio, 1e-4) << integrator;
+  }
+}
+
 // A box on a wheel joint to a static rail, axis up: the slide's passive spring is exact k, c; MuJoCo's Euler
 // applies the joint damping implicitly: (1 + h b) v1 = v0 - h kappa r0, r1 = r0 + h v1 (b = c / m).
 TEST(MujocoScene, WheelSpringIsTheOscillatorOfItsKAndCAndRigidAcross) {
