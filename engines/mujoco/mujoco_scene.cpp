@@ -93,6 +93,7 @@ std::optional<FieldError> refuse(std::string field, std::string why) {
 
 std::optional<FieldError> plan_tree(const SceneBuild& build, Tree& t) {
   const Scene& s = *build.scene;
+  if (build.springs.size() != s.joints.size()) return refuse("joints", "the build has no spring slot for every joint");
   if (s.world.allow_sleeping) return refuse("world.allow_sleeping", "MuJoCo 2.2.2 has no sleeping bodies");
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     if (s.bodies[i].restitution != 0.0) {
