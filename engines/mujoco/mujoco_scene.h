@@ -1,7 +1,8 @@
 #pragma once
 // The scene backend of MuJoCo 2.2.2 (Debian's libmujoco-dev, linked in process): a scene (scene.h) written as
 // MJCF in memory and loaded with mj_loadXML on a VFS, as mujoco_engine.cpp does for one spring. The MJCF is
-// what a designer could type: mujoco_scene_mjcf() returns it, to open in MuJoCo's `simulate`.
+// what a designer could type: mujoco_scene_mjcf() returns it, to open in MuJoCo's `simulate`. The mapping and
+// what it measures: docs/engines/mujoco.md, "Scenes in MuJoCo".
 //
 // The plane: MuJoCo is z-up, so the scene's x-y plane is MuJoCo's x-z plane (scene y = MuJoCo z) and a scene
 // angle (counter-clockwise seen from +z_scene = -y_MuJoCo) is a rotation about MuJoCo's -y: every hinge has
