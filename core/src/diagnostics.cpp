@@ -21,6 +21,8 @@ std::string_view stage_name(Stage s) {
     case Stage::core_integrator: return "core_integrator";
     case Stage::box2d_world: return "box2d_world";
     case Stage::box2d_step: return "box2d_step";
+    case Stage::engine_world: return "engine_world";
+    case Stage::engine_step: return "engine_step";
     case Stage::snapshots: return "snapshots";
     case Stage::response_fit: return "response_fit";
     case Stage::expectations: return "expectations";

@@ -5,19 +5,13 @@
 #include <cmath>
 #include <mutex>
 
+#include "ode_global.h"
 #include "softtune/engines/ode.h"
 
 namespace softtune::engines {
 namespace {
 
 constexpr double kDBallLength = 1.0;  // m, from the world anchor to the body's anchor at rest
-
-void init_ode_for_this_thread() {
-  static std::once_flag once;
-  std::call_once(once, [] { dInitODE2(0); });
-  thread_local bool allocated = false;
-  if (!allocated) allocated = dAllocateODEDataForThread(dAllocateMaskAll) != 0;
-}
 
 double setting(const SettingValues& values, int index) {
   const auto i = static_cast<std::size_t>(index);
@@ -33,11 +27,8 @@ RunTrajectory run_ode(const EngineRun& run) {
   const std::optional<double> cfm = parameter_value(run.parameters, slider ? "dParamStopCFM" : "dParamCFM");
   if (!erp || !cfm) return {};
 
-  // Debian's libode keeps global state (collision and step scratch) that two threads stepping at once
-  // corrupt: two concurrent POST /api/v1/verify with "ode" crashed the server inside libode.so. So one
-  // ODE run at a time; a run is milliseconds.
-  static std::mutex one_run_at_a_time;
-  const std::lock_guard lock(one_run_at_a_time);
+  // One ODE run at a time (ode_global.h: libode's global scratch); a run is milliseconds.
+  const std::lock_guard lock(ode_global_mutex());
   init_ode_for_this_thread();
   dWorldID world = dWorldCreate();
   dWorldSetGravity(world, 0, 0, 0);

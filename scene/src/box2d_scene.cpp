@@ -81,22 +81,6 @@ Body2D Box2DScene::core_body(const b2Body* body) {
 
 namespace {
 
-// Each joint's tuning: its constraint between the bodies as they start, on the scene's mass model.
-std::optional<FieldError> tune_joints(const Scene& scene, const std::vector<b2Body*>& bodies, MassModel model,
-                                      std::vector<JointTuning>& tunings) {
-  tunings.resize(scene.joints.size());
-  for (std::size_t i = 0; i < scene.joints.size(); ++i) {
-    const JointSettings& j = scene.joints[i];
-    const int a = index_of(scene.bodies, j.body_a), b = index_of(scene.bodies, j.body_b);
-    Body2D body_a;
-    body_a.is_static = true;  // a mouse joint pulls against the ground
-    if (a >= 0) body_a = Box2DScene::core_body(bodies[a]);
-    const Constraint2D c = joint_constraint(j, body_a, Box2DScene::core_body(bodies[b]));
-    if (auto e = tune_joint(j, c, scene.world, model, "joints." + std::to_string(i), tunings[i])) return e;
-  }
-  return std::nullopt;
-}
-
 // The Box2D 2.4 joint for one scene joint, with its tuning's stiffness and damping.
 b2Joint* create_joint(b2World& world, const JointSettings& j, const JointTuning& t, b2Body* body_a, b2Body* body_b) {
   // Every soft joint def of Box2D 2.4 takes stiffness (N/m, or N m/rad for the weld) and damping.
@@ -158,11 +142,17 @@ b2Joint* create_joint(b2World& world, const JointSettings& j, const JointTuning&
 
 }  // namespace
 
-Box2DScene::Box2DScene(const Scene& scene, MassModel model) : scene_(scene) {
+Box2DScene::Box2DScene(const Scene& scene, MassModel model, std::span<const std::optional<JointSpring>> springs)
+    : scene_(scene) {
   world_ = std::make_unique<b2World>(vec(scene.world.gravity));
   world_->SetAllowSleeping(scene.world.allow_sleeping);
   for (const BodySettings& s : scene.bodies) bodies_.push_back(create_body(*world_, s));
-  if ((error_ = tune_joints(scene, bodies_, model, tunings_))) return;
+  if ((error_ = tune_scene_joints(scene, model, tunings_))) return;
+  for (std::size_t i = 0; i < springs.size() && i < tunings_.size(); ++i) {
+    if (!springs[i]) continue;
+    tunings_[i].stiffness = springs[i]->stiffness;
+    tunings_[i].damping = springs[i]->damping;
+  }
   for (std::size_t i = 0; i < scene.joints.size(); ++i) {
     const JointSettings& j = scene.joints[i];
     b2Body* body_a = nullptr;
@@ -195,50 +185,28 @@ void Box2DScene::step_frame(int frame) {
   for (int s = 0; s < w.substeps; ++s) world_->Step(dt, w.velocity_iterations, w.position_iterations);
 }
 
-namespace {
-
-Eigen::Vector2d eig(const b2Vec2& v) { return {v.x, v.y}; }
-
-Eigen::Vector2d pull_direction(const JointSettings& s) {
-  const Eigen::Vector2d d = s.target - s.anchor_b;
-  return d.norm() > 0.0 ? Eigen::Vector2d(d.normalized()) : Eigen::Vector2d(1, 0);
+BodyState Box2DScene::body(std::size_t i) const {
+  const b2Body* b = bodies_[i];
+  BodyState out;
+  out.origin = {b->GetPosition().x, b->GetPosition().y};
+  out.centre = {b->GetWorldCenter().x, b->GetWorldCenter().y};
+  out.angle = b->GetAngle();
+  out.velocity = {b->GetLinearVelocity().x, b->GetLinearVelocity().y};
+  out.angular_velocity = b->GetAngularVelocity();
+  return out;
 }
 
-}  // namespace
-
-double joint_length(const JointSettings& s, const b2Joint* joint) {
-  auto* j = const_cast<b2Joint*>(joint);  // Box2D 2.4's getters are not const
-  switch (j->GetType()) {
-    case e_wheelJoint: return static_cast<b2WheelJoint*>(j)->GetJointTranslation();
-    case e_mouseJoint: return (eig(j->GetAnchorB()) - s.target).dot(pull_direction(s));
-    default: return (eig(j->GetAnchorB()) - eig(j->GetAnchorA())).norm();
-  }
-}
-
-double joint_angle(const b2Joint* joint) {
-  auto* j = const_cast<b2Joint*>(joint);
-  const double relative = j->GetBodyB()->GetAngle() - j->GetBodyA()->GetAngle();
-  if (j->GetType() == e_weldJoint) return relative - static_cast<b2WeldJoint*>(j)->GetReferenceAngle();
-  if (j->GetType() == e_revoluteJoint) return relative - static_cast<b2RevoluteJoint*>(j)->GetReferenceAngle();
-  return relative;
-}
-
-double joint_error(const JointSettings& s, const b2Joint* joint) {
-  // Springs (tuned distance joints, mouse joints) have no rigid row: answer before touching the anchors.
-  if (s.kind == JointKind::mouse || (s.kind == JointKind::distance && (s.tuning || s.typed))) return 0.0;
-  auto* j = const_cast<b2Joint*>(joint);
-  const Eigen::Vector2d gap = eig(j->GetAnchorB()) - eig(j->GetAnchorA());
-  switch (s.kind) {
-    case JointKind::wheel: {
-      auto* w = static_cast<b2WheelJoint*>(j);
-      const Eigen::Vector2d axis = eig(w->GetBodyA()->GetWorldVector(w->GetLocalAxisA()));
-      return std::abs(gap.dot(Eigen::Vector2d(-axis.y(), axis.x())));
+std::vector<ContactSnapshot> Box2DScene::contacts() const {
+  std::vector<ContactSnapshot> out;
+  for (const b2Contact* c = world_->GetContactList(); c; c = c->GetNext()) {
+    if (!c->IsTouching() || !c->IsEnabled()) continue;
+    b2WorldManifold m;
+    c->GetWorldManifold(&m);
+    for (int k = 0; k < c->GetManifold()->pointCount; ++k) {
+      out.push_back({{m.points[k].x, m.points[k].y}, {m.normal.x, m.normal.y}});
     }
-    case JointKind::distance:
-      return std::abs(gap.norm() - static_cast<b2DistanceJoint*>(j)->GetLength());
-    default:  // revolute, weld: the anchors coincide
-      return gap.norm();
   }
+  return out;
 }
 
 }  // namespace softtune::scene

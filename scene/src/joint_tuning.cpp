@@ -8,6 +8,7 @@
 #include "softtune/engines/box2d_v2_4.h"
 #include "softtune/engines/engine_model.h"
 
+#include "softtune/scene/scene_geometry.h"
 #include "softtune/validation.h"
 
 namespace softtune::scene {
@@ -143,6 +144,38 @@ std::optional<FieldError> tune_joint(const JointSettings& j, const Constraint2D&
   out.stiffness = spring.stiffness;
   out.damping = spring.damping;
   out.predicted_frequency_hz = out.result.frequency_hz * std::sqrt(out.model_mass / out.effective_mass);
+  return std::nullopt;
+}
+
+Body2D start_body(const BodySettings& body) {
+  Body2D b;
+  b.is_static = body.is_static;
+  b.angle = body.angle;
+  const MassData m = body_mass(body);
+  const double c = std::cos(body.angle), s = std::sin(body.angle);
+  b.position = body.position + Eigen::Vector2d(c * m.local_centre.x() - s * m.local_centre.y(),
+                                               s * m.local_centre.x() + c * m.local_centre.y());
+  if (body.is_static) return b;
+  b.mass = m.mass;
+  if (!body.fixed_rotation) b.inertia = m.inertia;
+  return b;
+}
+
+std::optional<FieldError> tune_scene_joints(const Scene& scene, MassModel model, std::vector<JointTuning>& out) {
+  out.assign(scene.joints.size(), JointTuning{});
+  auto body_of = [&scene](const std::string& id) {
+    for (const BodySettings& b : scene.bodies) {
+      if (b.id == id) return start_body(b);
+    }
+    Body2D ground;  // a mouse joint pulls against the ground
+    ground.is_static = true;
+    return ground;
+  };
+  for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+    const JointSettings& j = scene.joints[i];
+    const Constraint2D c = joint_constraint(j, body_of(j.body_a), body_of(j.body_b));
+    if (auto e = tune_joint(j, c, scene.world, model, "joints." + std::to_string(i), out[i])) return e;
+  }
   return std::nullopt;
 }
 

@@ -4,7 +4,8 @@
 #include <cmath>
 #include <memory>
 
-#include "softtune/scene/box2d_scene.h"
+#include "softtune/scene/box2d_backend.h"
+#include "softtune/scene/probe_geometry.h"
 #include "softtune/validation.h"
 
 namespace softtune::scene {
@@ -61,61 +62,9 @@ std::optional<FieldError> run_oscillator(const Scene& scene, const OscillatorSet
   return std::nullopt;
 }
 
-bool body_finite(const b2Body* b) {
-  const b2Vec2 p = b->GetPosition(), v = b->GetLinearVelocity();
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(b->GetAngle()) && std::isfinite(v.x) &&
-         std::isfinite(v.y) && std::isfinite(b->GetAngularVelocity());
-}
-
-Snapshot snapshot(const Scene& scene, Box2DScene& world, int frame) {
-  Snapshot out;
-  out.frame = frame;
-  out.time_s = frame / scene.world.fps;
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-    const b2Body* body = world.bodies()[i];
-    BodySnapshot b;
-    b.id = scene.bodies[i].id;
-    b.is_static = scene.bodies[i].is_static;
-    for (const ProbeSettings& p : scene.probes) b.probed = b.probed || p.body == b.id;
-    b.center = {body->GetPosition().x, body->GetPosition().y};
-    b.angle = body->GetAngle();
-    b.mass_centre = {body->GetWorldCenter().x, body->GetWorldCenter().y};
-    const b2Shape* shape = body->GetFixtureList()->GetShape();
-    if (shape->GetType() == b2Shape::e_circle) {
-      const auto* c = static_cast<const b2CircleShape*>(shape);
-      const b2Vec2 p = body->GetWorldPoint(c->m_p);
-      b.is_circle = true;
-      b.center = {p.x, p.y};
-      b.radius = c->m_radius;
-    } else {
-      const auto* poly = static_cast<const b2PolygonShape*>(shape);
-      for (int k = 0; k < poly->m_count; ++k) {
-        const b2Vec2 p = body->GetWorldPoint(poly->m_vertices[k]);
-        b.vertices.emplace_back(p.x, p.y);
-      }
-    }
-    out.bodies.push_back(std::move(b));
-  }
-  for (std::size_t i = 0; i < scene.joints.size(); ++i) {
-    b2Joint* j = world.joints()[i];
-    JointSnapshot s;
-    s.id = scene.joints[i].id;
-    s.kind = joint_kind_name(scene.joints[i].kind);
-    s.anchor_a = {j->GetAnchorA().x, j->GetAnchorA().y};
-    s.anchor_b = {j->GetAnchorB().x, j->GetAnchorB().y};
-    if (j->GetType() == e_distanceJoint) s.rest_length = static_cast<b2DistanceJoint*>(j)->GetLength();
-    s.current_length = (s.anchor_b - s.anchor_a).norm();
-    out.joints.push_back(std::move(s));
-  }
-  for (b2Contact* c = world.world().GetContactList(); c; c = c->GetNext()) {
-    if (!c->IsTouching() || !c->IsEnabled()) continue;
-    b2WorldManifold m;
-    c->GetWorldManifold(&m);
-    for (int k = 0; k < c->GetManifold()->pointCount; ++k) {
-      out.contacts.push_back({{m.points[k].x, m.points[k].y}, {m.normal.x, m.normal.y}});
-    }
-  }
-  return out;
+bool body_finite(const BodyState& b) {
+  return b.origin.allFinite() && b.centre.allFinite() && std::isfinite(b.angle) && b.velocity.allFinite() &&
+         std::isfinite(b.angular_velocity);
 }
 
 // What a probe reads, resolved once: the body or joint index behind its id.
@@ -125,19 +74,18 @@ struct ProbeTarget {
   Eigen::Vector2d axis{0, 1};
 };
 
-// One probe's value now, from the world and its state at the start.
-double probe_value(const Scene& scene, const ProbeTarget& t, Box2DScene& world, const std::vector<b2Vec2>& start_centers,
-                   const std::vector<float>& start_angles) {
+// One probe's value now, from the bodies' poses now and at the start.
+double probe_value(const Scene& scene, const ProbeTarget& t, const std::vector<JointFrame>& frames,
+                   std::span<const BodyState> now, std::span<const BodyState> start) {
   if (t.body >= 0) {
-    const b2Body* body = world.bodies()[t.body];
-    if (t.probe->kind == ProbeKind::angle) return body->GetAngle() - start_angles[t.body];
-    const b2Vec2 d = body->GetWorldCenter() - start_centers[t.body];
-    return d.x * t.axis.x() + d.y * t.axis.y();
+    if (t.probe->kind == ProbeKind::angle) return now[t.body].angle - start[t.body].angle;
+    return (now[t.body].centre - start[t.body].centre).dot(t.axis);
   }
+  const JointSettings& joint = scene.joints[t.joint];
   switch (t.probe->kind) {
-    case ProbeKind::joint_length: return joint_length(scene.joints[t.joint], world.joints()[t.joint]);
-    case ProbeKind::joint_angle: return joint_angle(world.joints()[t.joint]);
-    default: return joint_error(scene.joints[t.joint], world.joints()[t.joint]);
+    case ProbeKind::joint_length: return joint_length(joint, frames[t.joint], now);
+    case ProbeKind::joint_angle: return joint_angle(frames[t.joint], now);
+    default: return joint_error(joint, frames[t.joint], now);
   }
 }
 
@@ -182,19 +130,16 @@ std::vector<ProbeTarget> resolve_probe_targets(const Scene& scene) {
   return targets;
 }
 
-// Steps the Box2D world frame by frame, sampling the probes at t = 0 and after every frame (into
-// `samples`, indexed like scene.probes), and watching for NaN, bodies leaving the world and the largest
-// constraint error; records snapshots when asked.
-void step_world(const Scene& scene, const RunOptions& options, Box2DScene& world, std::vector<std::vector<double>>& samples,
-                SceneResult& r) {
-  r.stages.add(Stage::box2d_step);
+// Steps the world frame by frame, sampling the probes at t = 0 and after every frame (into `samples`, indexed
+// like scene.probes), and watching for NaN, bodies leaving the world and the largest constraint error; records
+// snapshots when asked.
+void step_world(const Scene& scene, const RunOptions& options, bool box2d, SceneWorld& world,
+                std::vector<std::vector<double>>& samples, SceneResult& r) {
+  r.stages.add(box2d ? Stage::box2d_step : Stage::engine_step);
   if (options.record_frames) r.stages.add(Stage::snapshots);
-  std::vector<b2Vec2> centers;
-  std::vector<float> angles;
-  for (const b2Body* b : world.bodies()) {
-    centers.push_back(b->GetWorldCenter());
-    angles.push_back(b->GetAngle());
-  }
+  const std::vector<JointFrame> frames = joint_frames(scene);
+  std::vector<BodyState> start(scene.bodies.size()), now(scene.bodies.size());
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) start[b] = world.body(b);
   const std::vector<ProbeTarget> targets = resolve_probe_targets(scene);
   for (const ProbeTarget& t : targets) samples[t.probe - scene.probes.data()].reserve(r.frames + 1);
   std::vector<bool> left(scene.bodies.size(), false);
@@ -203,28 +148,78 @@ void step_world(const Scene& scene, const RunOptions& options, Box2DScene& world
   std::size_t next_record = 0;  // into options.record_at
   for (int f = 0; f <= r.frames; ++f) {
     if (f > 0) world.step_frame(f - 1);
-    for (const b2Body* b : world.bodies()) r.finite = r.finite && body_finite(b);
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+      now[b] = world.body(b);
+      r.finite = r.finite && body_finite(now[b]);
+    }
     if (!r.finite) break;  // a NaN never reaches a probe series
-    for (const ProbeTarget& t : targets) samples[t.probe - scene.probes.data()].push_back(probe_value(scene, t, world, centers, angles));
+    for (const ProbeTarget& t : targets) samples[t.probe - scene.probes.data()].push_back(probe_value(scene, t, frames, now, start));
     for (std::size_t j = 0; j < scene.joints.size(); ++j) {
-      r.max_constraint_error = std::max(r.max_constraint_error, joint_error(scene.joints[j], world.joints()[j]));
+      r.max_constraint_error = std::max(r.max_constraint_error, joint_error(scene.joints[j], frames[j], now));
     }
     for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
-      const b2Vec2 p = world.bodies()[b]->GetPosition();
-      if (!left[b] && (p.x < bounds[0] || p.y < bounds[1] || p.x > bounds[2] || p.y > bounds[3])) {
+      const Eigen::Vector2d& p = now[b].origin;
+      if (!left[b] && (p.x() < bounds[0] || p.y() < bounds[1] || p.x() > bounds[2] || p.y() > bounds[3])) {
         left[b] = true;
         r.left_world.push_back(scene.bodies[b].id);
       }
     }
     if (!options.record_frames) continue;
     if (options.record_at.empty()) {
-      if (f % stride == 0) r.snapshots.push_back(snapshot(scene, world, f));
+      if (f % stride == 0) r.snapshots.push_back(snapshot(scene, frames, now, world.contacts(), f));
       continue;
     }
     for (; next_record < options.record_at.size() && options.record_at[next_record] <= f; ++next_record) {
-      if (options.record_at[next_record] == f) r.snapshots.push_back(snapshot(scene, world, f));
+      if (options.record_at[next_record] == f) r.snapshots.push_back(snapshot(scene, frames, now, world.contacts(), f));
     }
   }
+}
+
+// The engine's settings by its own names (choices by name).
+engines::Parameters describe(const SceneBackend& backend, const engines::SettingValues& values) {
+  engines::Parameters out;
+  for (std::size_t i = 0; i < backend.settings.size() && i < values.size(); ++i) {
+    const engines::SettingSpec& spec = backend.settings[i];
+    if (spec.choices.empty()) {
+      out.push_back({spec.name, values[i], spec.unit});
+    } else {
+      out.push_back({spec.name, 0.0, {}, spec.choices[static_cast<std::size_t>(values[i])]});
+    }
+  }
+  return out;
+}
+
+// Builds the scene's world in the backend: every joint tuned on the bodies as they start (the same k, c in
+// every engine), each soft joint given its spring (options.springs where set), and what to type for it.
+std::unique_ptr<SceneWorld> build_world(const Scene& scene, const RunOptions& options, const SceneBackend& backend,
+                                        SceneResult& r) {
+  engines::SettingValues settings = options.engine_settings;
+  if (settings.empty()) {
+    for (const engines::SettingSpec& spec : backend.settings) settings.push_back(spec.default_value);
+  }
+  r.engine_settings = describe(backend, settings);
+  if (auto e = tune_scene_joints(scene, r.mass_model, r.joints)) {
+    r.error = e;
+    return nullptr;
+  }
+  SceneBuild build{&scene, {}, settings};
+  r.joint_fields.resize(scene.joints.size());
+  for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+    JointTuning& t = r.joints[i];
+    std::optional<JointSpring> spring;
+    if (t.soft()) spring = JointSpring{t.stiffness, t.damping};
+    if (i < options.springs.size() && options.springs[i]) spring = options.springs[i];
+    if (spring) {
+      t.stiffness = spring->stiffness;
+      t.damping = spring->damping;
+      r.joint_fields[i] = backend.fields(scene, i, *spring, settings);
+    }
+    build.springs.push_back(spring);
+  }
+  std::optional<FieldError> refused;
+  std::unique_ptr<SceneWorld> world = backend.build(build, refused);
+  if (!world) r.error = refused.value_or(FieldError{"engine", std::string(backend.name) + " could not build the scene"});
+  return world;
 }
 
 // Each probe's series fitted (Prony) and set against what was asked of it and what was predicted.
@@ -308,21 +303,20 @@ SceneResult run_scene(const Scene& scene, const RunOptions& options) {
   r.frames = frame_count(scene.world);
   r.h = step_size(scene.world.fps, scene.world.substeps);
 
-  // The Box2D world exists only for scenes with bodies: the 1-D oscillator never creates one.
-  std::unique_ptr<Box2DScene> world;
+  // The engine's world exists only for scenes with bodies: the 1-D oscillator never creates one.
+  const SceneBackend& backend = options.backend ? *options.backend : kBox2DV24SceneBackend;
+  const bool box2d = &backend == &kBox2DV24SceneBackend;
+  r.engine = backend.name;
+  r.engine_version = backend.version;
+  std::unique_ptr<SceneWorld> world;
   if (!scene.bodies.empty()) {
-    r.stages.add(Stage::box2d_world);
-    world = std::make_unique<Box2DScene>(scene, r.mass_model);
-    if (world->error()) {
-      r.error = world->error();
-      return r;
-    }
-    r.joints = world->tunings();
+    r.stages.add(box2d ? Stage::box2d_world : Stage::engine_world);
+    if (!(world = build_world(scene, options, backend, r))) return r;
   }
   if (!scene.oscillators.empty() && !run_oscillators(scene, r)) return r;
 
   std::vector<std::vector<double>> samples(scene.probes.size());
-  if (world) step_world(scene, options, *world, samples, r);
+  if (world) step_world(scene, options, box2d, *world, samples, r);
   fit_probes(scene, samples, r);
   return r;
 }

@@ -90,6 +90,7 @@ std::vector<NumericLimit> numeric_limits() {
       {"scene_max_body_steps", sl::kMaxBodySteps},
       {"scene_max_bodies", D(sl::kMaxBodies)},
       {"scene_max_joints", D(sl::kMaxJoints)},
+      {"scene_max_typed_stiffness", sl::kMaxTypedStiffness},
       {"modes_max_dynamic_bodies", D(sl::kMaxModeBodies)},
       {"modal_max_targets", D(sl::kMaxModeTargets)},
       {"modal_max_groups", D(sl::kMaxJointGroups)},
@@ -229,7 +230,8 @@ std::vector<LimitRow> request_rows() {
            figure(sl::kMaxBodyMass) + " kg, densities " + figure(sl::kMinDensity) + " to " + figure(sl::kMaxDensity) +
            " kg/m^2, speeds <= " + figure(sl::kMaxSpeed) + " m/s, angular speeds <= " + figure(sl::kMaxAngularSpeed) +
            " rad/s, " + figure(sl::kMaxPolygonVertices) + " polygon vertices, ids <= " + figure(sl::kMaxIdLength) +
-           " characters",
+           " characters, a joint's typed stiffness in (0, " + figure(sl::kMaxTypedStiffness) + "] and |damping| <= " +
+           figure(sl::kMaxTypedStiffness),
        "`scene/include/softtune/scene/limits.h`", "422 naming the field"},
       {"modes and modal tuning",
        "at most " + figure(sl::kMaxModeBodies) + " dynamic bodies, at_s within [0, duration_s], " +

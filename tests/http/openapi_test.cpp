@@ -130,6 +130,7 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["scene_max_body_steps"], softtune::scene::limits::kMaxBodySteps);
   EXPECT_EQ(x["scene_max_bodies"], softtune::scene::limits::kMaxBodies);
   EXPECT_EQ(x["scene_max_joints"], softtune::scene::limits::kMaxJoints);
+  EXPECT_EQ(x["scene_max_typed_stiffness"], softtune::scene::limits::kMaxTypedStiffness);
   EXPECT_EQ(x["modes_max_dynamic_bodies"], softtune::scene::limits::kMaxModeBodies);
   EXPECT_EQ(x["modal_max_targets"], softtune::scene::limits::kMaxModeTargets);
   EXPECT_EQ(x["modal_max_groups"], softtune::scene::limits::kMaxJointGroups);
@@ -158,7 +159,7 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["max_kept_jobs"], softtune::app::kMaxKeptJobs);
   EXPECT_EQ(x["job_kept_s"], softtune::app::kKeepJobsFor.count());
   EXPECT_EQ(x["max_kept_job_bytes"], softtune::app::kMaxKeptJobBytes);
-  EXPECT_EQ(x.size(), 53u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x.size(), 54u) << "a limit is documented that this test does not check";
   // A list's length in a schema is the codec's.
   EXPECT_EQ(openapi_document()["components"]["schemas"]["AccuracyRequest"]["properties"]["soft_substeps"]["maxItems"],
             softtune::limits::kMaxSoftSubsteps);

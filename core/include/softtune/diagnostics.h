@@ -17,6 +17,7 @@ enum class Stage : std::uint8_t {
   engine_models,
   // scenes
   scene_setup, core_integrator, box2d_world, box2d_step, snapshots, response_fit, expectations,
+  engine_world, engine_step,  ///< a scene's world and steps in an engine other than Box2D 2.4 (the answer's engine)
   // modes of a scene (modes.h, modal_tune.h, scene/linearise.h)
   settle, linearise, modes, modal_solve,
   // accuracy and stability

@@ -15,6 +15,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "softtune/diagnostics.h"
 #include "softtune/effective_mass.h"
@@ -77,5 +78,12 @@ Constraint2D joint_constraint(const JointSettings& joint, const Body2D& body_a, 
 std::optional<FieldError> tune_joint(const JointSettings& joint, const Constraint2D& constraint,
                                      const WorldSettings& world, MassModel model, const std::string& path,
                                      JointTuning& out);
+
+/// The body as the core sees it at the start: its mass data (scene_geometry.h, Box2D 2.4.1's) at its pose.
+Body2D start_body(const BodySettings& body);
+
+/// Every joint of the scene tuned (tune_joint) on the bodies as they start, indexed like scene.joints: the
+/// same k, c whichever engine the scene runs in. The first joint that fails validation is returned.
+std::optional<FieldError> tune_scene_joints(const Scene& scene, MassModel model, std::vector<JointTuning>& out);
 
 }  // namespace softtune::scene

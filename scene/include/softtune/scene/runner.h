@@ -12,6 +12,7 @@
 #include "softtune/scene/joint_tuning.h"
 #include "softtune/scene/modal_tuning.h"
 #include "softtune/scene/scene.h"
+#include "softtune/scene/scene_world.h"
 #include "softtune/scene/snapshot.h"
 
 namespace softtune::scene {
@@ -23,6 +24,13 @@ struct RunOptions {
   /// Game frames to record instead of every frame_stride-th, ascending (a preview's frames spread over
   /// the whole run, render/frame_schedule.h); a frame listed twice is recorded twice.
   std::vector<int> record_at = {};
+  /// The engine the scene runs in (scene_world.h); null: Box2D 2.4 (kBox2DV24SceneBackend, box2d_backend.h).
+  const SceneBackend* backend = nullptr;
+  /// The backend's settings, indexed like backend->settings and within their ranges; empty: its defaults.
+  engines::SettingValues engine_settings = {};
+  /// Per joint (indexed like scene.joints): a spring that replaces what the joint's own tuning gives, as a
+  /// tuning in the engine tries them; empty: the scene's own.
+  std::vector<std::optional<JointSpring>> springs = {};
 };
 
 struct ProbeResult {
@@ -55,7 +63,13 @@ struct OscillatorRun {
 inline constexpr double kDivergence = 1.0e9;
 
 struct SceneResult {
-  std::optional<FieldError> error;      ///< a joint or oscillator tuning that failed validation
+  std::optional<FieldError> error;      ///< a joint or oscillator tuning that failed validation, or a refusal
+  std::string engine = "box2d_v2_4";    ///< the backend that ran (SceneBackend::name)
+  std::string engine_version;           ///< SceneBackend::version
+  engines::Parameters engine_settings;  ///< the settings it ran with, by the engine's own names
+  /// Per joint (indexed like scene.joints): what to type into the engine for its spring
+  /// (SceneBackend::fields); empty for a rigid joint.
+  std::vector<engines::Parameters> joint_fields;
   MassModel mass_model = MassModel::effective;
   StageList stages;
   int frames = 0;
