@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "softtune/designer.h"
+#include "softtune/engines/mujoco.h"
 #include "softtune/scene/scene_geometry.h"
 #include "softtune/support/run_limit.h"
 
@@ -557,6 +558,46 @@ mjModel* load_xml(const std::string& xml, std::string& error) {
   return m;
 }
 
+// mj_Euler's step of a coordinate whose damping is implicit (a joint's dof_damping; under the implicit
+// integrator every passive and actuator damping): (1 + h beta) v1 = v0 - h kappa r0, r1 = r0 + h v1.
+Eigen::Matrix2d implicit_damping_step_map(double beta, double kappa, double h) {
+  const double g = 1.0 / (1.0 + h * beta);
+  Eigen::Matrix2d step;
+  step << 1.0 - h * h * kappa * g, h * g, -h * kappa * g, g;
+  return step;
+}
+
+// MuJoCo applies a spring explicitly (mj_passive, or the mouse's actuator bias): a stiffness whose step grows
+// on the coordinate's inverse effective mass at the start (dof_invweight0 / tendon_invweight0, the exact
+// J M^-1 J' engine_setconst.c computes at qpos0) is refused, as MuJoCo would blow up (stiff's 20 Hz at 60 fps).
+std::optional<FieldError> check_springs(const SceneBuild& build, const mjModel* m) {
+  const Scene& s = *build.scene;
+  const double h = step_size(s.world.fps, s.world.substeps);
+  const auto integrator = static_cast<MujocoIntegrator>(static_cast<int>(setting(build, kMujocoSceneIntegrator)));
+  for (std::size_t i = 0; i < s.joints.size(); ++i) {
+    const JointSettings& j = s.joints[i];
+    if (!build.springs[i] || j.kind == JointKind::revolute) continue;
+    const bool tendon = j.kind == JointKind::distance || j.kind == JointKind::mouse;
+    double inverse_mass = 0.0;
+    if (tendon) {
+      inverse_mass = m->tendon_invweight0[mj_name2id(m, mjOBJ_TENDON, j.id.c_str())];
+    } else {
+      const int joint = mj_name2id(m, mjOBJ_JOINT, j.id.c_str());
+      if (joint < 0) continue;  // a rigid weld: no joint
+      inverse_mass = m->dof_invweight0[m->jnt_dofadr[joint]];
+    }
+    const double beta = build.springs[i]->damping * inverse_mass, kappa = build.springs[i]->stiffness * inverse_mass;
+    const bool implicit_damping = integrator == MujocoIntegrator::implicit || (integrator == MujocoIntegrator::euler && !tendon);
+    const Eigen::Matrix2d step = implicit_damping ? implicit_damping_step_map(beta, kappa, h) : mujoco_step_map(integrator, beta, kappa, h);
+    if (!predict_from_step_map(step, h).stable) {
+      return refuse("joints." + std::to_string(i),
+                    "MuJoCo applies this spring explicitly (mj_passive): its stiffness and damping grow at the "
+                    "scene's step on the joint's J M^-1 J' (omega h above 2), MuJoCo would blow up");
+    }
+  }
+  return std::nullopt;
+}
+
 std::unique_ptr<scene::SceneWorld> build_world(const SceneBuild& build, std::optional<FieldError>& error) {
   Tree tree;
   if ((error = plan_tree(build, tree))) return nullptr;
@@ -565,6 +606,10 @@ std::unique_ptr<scene::SceneWorld> build_world(const SceneBuild& build, std::opt
   mjModel* m = load_xml(xml, message);
   if (!m) {
     error = refuse("bodies", "mj_loadXML refused the scene's MJCF: " + message);
+    return nullptr;
+  }
+  if ((error = check_springs(build, m))) {
+    mj_deleteModel(m);
     return nullptr;
   }
   return std::make_unique<MujocoWorld>(build, tree, m);

@@ -38,11 +38,12 @@
 // explicit <contact><pair> with that friction (an explicit pair replaces the dynamic one of the same geoms).
 // collide_connected false is a <contact><exclude> of the two bodies (filterparent is disabled, so a nested
 // pair with collide_connected true does collide). MuJoCo has no restitution: a non-zero one is refused
-// (bodies.N.restitution), as is allow_sleeping (2.2.2 has no sleeping). The contacts themselves are MuJoCo's
+// (bodies.N.restitution), as is allow_sleeping (2.2.2 has no sleeping), and so is a spring whose explicit step
+// grows on its coordinate's J M^-1 J' at the start (joints.N: MuJoCo would blow up; the stiff preset's 20 Hz). The contacts themselves are MuJoCo's
 // soft ones (solref 0.02 1 raised to 2 timestep), without Box2D's contact skin: the vehicle preset's tyres,
 // placed where Box2D's skin holds them, start 5 mm above the road and land.
-// Step: timestep = 1 / (fps substeps), world.substeps mj_step calls per frame. If MuJoCo finds a bad qacc it
-// resets the state (mj_checkAcc): the backend then reports NaN bodies instead of the reset pose.
+// Step: timestep = 1 / (fps substeps), world.substeps mj_step calls per frame. If MuJoCo still finds a bad qacc
+// it resets the state (mj_checkAcc): the backend then reports NaN bodies instead of the reset pose.
 //
 // Fields a designer types (SceneBackend::fields), on the MJCF element named after the scene joint's id:
 //   distance: "tendon/spatial/@stiffness" N/m, "tendon/spatial/@damping" N s/m, "tendon/spatial/@springlength" m

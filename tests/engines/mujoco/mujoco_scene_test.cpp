@@ -10,21 +10,17 @@
 
 #include <Eigen/Geometry>
 
-#include <chrono>
 #include <cstring>
 #include <memory>
 #include <cmath>
-#include <fstream>
 #include <numbers>
 
-#include "codec/scene_codec.h"
 #include "softtune/designer.h"
 #include "softtune/engines/engine_model.h"
 #include "softtune/engines/mujoco.h"
 #include "softtune/response_fit.h"
-#include "softtune/scene/box2d_scene.h"
 #include "softtune/scene/scene_geometry.h"
-#include "../../presets_dir.h"
+#include "../scene_backend_cases.h"
 
 namespace softtune::engines {
 namespace {
@@ -36,10 +32,7 @@ using scene::JointSpring;
 using scene::Scene;
 using scene::SceneBuild;
 
-Scene mjscene_preset(const std::string& name) {
-  std::ifstream in(test_support::kPresets + "/" + name + ".json");
-  return codec::decode_scene(nlohmann::json::parse(in));
-}
+using test_support::scene_cases::load_preset;
 
 BodySettings mjscene_box(const std::string& id, Eigen::Vector2d at, double mass, bool is_static = false) {
   BodySettings b;
@@ -52,7 +45,8 @@ BodySettings mjscene_box(const std::string& id, Eigen::Vector2d at, double mass,
 }
 
 // The springs Box2D 2.4 needs for the vehicle's 3 Hz, zeta 0.5 heave (the modal solve at 60 fps).
-constexpr JointSpring kMjsceneSuspension{24842.07, 914.753};
+constexpr JointSpring kMjsceneSuspension{test_support::scene_cases::kVehicleStiffness,
+                                         test_support::scene_cases::kVehicleDamping};
 
 struct MjsceneRun {
   std::vector<scene::BodyState> states;  // body `probe` at every frame, frame 0 first
@@ -266,7 +260,7 @@ TEST(MujocoScene, PolygonRestsWhereItsVerticesAre) {
 // The MJCF a designer opens in MuJoCo holds the scene's numbers under the names the header gives: the
 // suspension's slide joints carry k and c, the chassis its mass, the road-and-box pairs Box2D's friction.
 TEST(MujocoScene, MjcfCarriesTheSpringsMassesAndFrictionPairs) {
-  const Scene s = mjscene_preset("vehicle");
+  const Scene s = load_preset("vehicle");
   SceneBuild b{&s, {kMjsceneSuspension, kMjsceneSuspension}, {}};
   std::optional<FieldError> error;
   const std::string xml = mujoco_scene_mjcf(b, error);
@@ -295,82 +289,25 @@ TEST(MujocoScene, MjcfCarriesTheSpringsMassesAndFrictionPairs) {
 }
 
 
-std::size_t mjscene_body(const Scene& s, const std::string& id) {
-  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
-    if (s.bodies[i].id == id) return i;
-  }
-  return s.bodies.size();
-}
-
-// The chassis centre's y over frames [0, 2 s] in Box2D 2.4 with the suspension typed as k, c.
-std::vector<double> mjscene_box2d_heave(Scene s, double& ms) {
-  s.modal_tuning.reset();
-  for (JointSettings& j : s.joints) {
-    j.tuning.reset();
-    j.typed = scene::TypedSpring{kMjsceneSuspension.stiffness, kMjsceneSuspension.damping};
-  }
-  const auto t0 = std::chrono::steady_clock::now();
-  scene::Box2DScene world(s, s.mass_model);
-  EXPECT_FALSE(world.error());
-  const b2Body* chassis = world.bodies()[mjscene_body(s, "chassis")];
-  std::vector<double> y{chassis->GetWorldCenter().y};
-  const int frames = scene::frame_count(s.world);
-  for (int f = 0; f < frames; ++f) {
-    world.step_frame(f);
-    if (f < 120) y.push_back(chassis->GetWorldCenter().y);
-  }
-  ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  return y;
-}
-
+// The vehicle on Box2D's suspension k, c from the preset's start: it settles on its wheels, heaves near 3 Hz, and
+// from 2 s the motor drives it right into the stack. Not Box2D's 3.00 Hz / 0.50: these k, c are what Box2D's
+// soft step needs (its implicit Euler adds about omega h / 2 of damping), MuJoCo steps the springs
+// semi-implicitly (joint damping implicit), and its tyres have no skin: the car starts 5 mm up and lands (the
+// next test). Measured: 2.968 Hz, zeta 0.273.
 TEST(MujocoScene, VehicleSettlesHeavesNearThreeHertzAndDrivesIntoTheBoxes) {
-  const Scene s = mjscene_preset("vehicle");
-  SceneBuild b{&s, {kMjsceneSuspension, kMjsceneSuspension}, {}};
-  std::optional<FieldError> error;
-  const auto t0 = std::chrono::steady_clock::now();
-  auto world = kMujocoSceneBackend.build(b, error);
-  ASSERT_TRUE(world) << error->field << ": " << error->rule;
-  const std::size_t chassis = mjscene_body(s, "chassis");
-  std::vector<double> heave{world->body(chassis).centre.y()};
-  std::vector<Eigen::Vector2d> box_start;
-  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
-    if (s.bodies[i].id.rfind("box_", 0) == 0) box_start.push_back(world->body(i).centre);
-  }
-  const int frames = scene::frame_count(s.world);
-  double pushed = 0.0;
-  for (int f = 0; f < frames; ++f) {
-    world->step_frame(f);
-    const scene::BodyState c = world->body(chassis);
-    ASSERT_TRUE(std::isfinite(c.centre.x()) && std::isfinite(c.centre.y()) && std::isfinite(c.angle)) << f;
-    if (f < 120) heave.push_back(c.centre.y());
-  }
-  const double mujoco_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
-    if (s.bodies[i].id.rfind("box_", 0) == 0) pushed = std::max(pushed, world->body(i).centre.x() - box_start[k++].x());
-  }
-  const double h = 1.0 / s.world.fps;
-  const ResponseFit fit = fit_response(heave, h);
-  double box2d_ms = 0.0;
-  const ResponseFit box2d = fit_response(mjscene_box2d_heave(s, box2d_ms), h);
-  ASSERT_TRUE(fit.frequency_hz && fit.damping_ratio && box2d.frequency_hz && box2d.damping_ratio);
-  std::printf("vehicle heave on k %.2f, c %.3f: mujoco %.3f Hz zeta %.3f; box2d_v2_4 %.3f Hz zeta %.3f\n",
-              kMjsceneSuspension.stiffness, kMjsceneSuspension.damping, *fit.frequency_hz, *fit.damping_ratio,
-              *box2d.frequency_hz, *box2d.damping_ratio);
-  std::printf("vehicle run, 6 s at 60 fps: mujoco %.1f ms, box2d_v2_4 %.1f ms (ratio %.2f)\n", mujoco_ms, box2d_ms,
-              mujoco_ms / box2d_ms);
-  // Settled on its wheels: the chassis rests near where it starts (the tyres and the road are MuJoCo-soft).
-  EXPECT_NEAR(*fit.equilibrium, s.bodies[chassis].position.y(), 0.05);
-  // A damped oscillation near 3 Hz. Not Box2D's 3.00 Hz / 0.50: these k, c are what Box2D's soft step needs
-  // (its implicit Euler adds about omega h / 2 of damping), MuJoCo steps the springs semi-implicitly (joint
-  // damping implicit), and its tyres have no skin: the car starts 5 mm up and lands (the next test).
-  EXPECT_NEAR(*fit.frequency_hz, 3.0, 0.1 * 3.0);
-  EXPECT_GT(*fit.damping_ratio, 0.15);
-  EXPECT_LT(*fit.damping_ratio, 0.6);
-  // The motor from 2 s drives it right, into the stack at x = 9.
-  const scene::BodyState end = world->body(chassis);
-  EXPECT_GT(end.centre.x() - s.bodies[chassis].position.x(), 5.0);
-  EXPECT_GT(pushed, 0.05);
+  using namespace test_support::scene_cases;
+  const VehicleRun v = run_vehicle(kMujocoSceneBackend, kVehicleStiffness, kVehicleDamping);
+  ASSERT_TRUE(v.built);
+  print_vehicle("mujoco", v);
+  EXPECT_TRUE(v.finite);
+  ASSERT_TRUE(v.heave.frequency_hz && v.heave.damping_ratio && v.heave.equilibrium);
+  EXPECT_NEAR(*v.heave.equilibrium, 1.005 - 0.005 - 120.0 * 10.0 / (2 * kVehicleStiffness), 0.005);  // sag on 2 k
+  EXPECT_NEAR(*v.heave.frequency_hz, 3.0, 0.1 * 3.0);
+  EXPECT_GT(*v.heave.damping_ratio, 0.15);
+  EXPECT_LT(*v.heave.damping_ratio, 0.6);
+  EXPECT_NEAR(v.chassis_x_at_motor, 0.0, 0.05);  // parked until the motor starts
+  EXPECT_GT(v.chassis_x_end, 5.0);
+  EXPECT_GT(v.box_moved, 0.05);
 }
 
 // The heave MuJoCo converges to is the continuous chassis on its two springs over rigid tyres,
@@ -378,11 +315,10 @@ TEST(MujocoScene, VehicleSettlesHeavesNearThreeHertzAndDrivesIntoTheBoxes) {
 // the tyres touching at the start (the preset's 5 mm of Box2D contact skin taken out: with it the landing's
 // bounce makes the fit read 3.43 Hz, 0.35) and at 32 substeps, where the step's own error is gone.
 TEST(MujocoScene, VehicleHeaveAtFineStepsIsTheContinuousChassisOnItsSprings) {
-  Scene s = mjscene_preset("vehicle");
+  using namespace test_support::scene_cases;
+  Scene s = typed_vehicle(kVehicleStiffness, kVehicleDamping, kBox2DTyreLift);
   s.world.substeps = 32;
-  for (std::size_t i : {1, 2, 3}) s.bodies[i].position.y() -= 0.005;
-  for (JointSettings& j : s.joints) j.anchor_b.y() -= 0.005;
-  const MjsceneRun run = mjscene_run(s, {kMjsceneSuspension, kMjsceneSuspension}, mjscene_body(s, "chassis"), 120);
+  const MjsceneRun run = mjscene_run(s, {kMjsceneSuspension, kMjsceneSuspension}, body_of(s, "chassis"), 120);
   const ResponseFit fit = fit_response(mjscene_y(run), 1.0 / s.world.fps);
   ASSERT_TRUE(fit.frequency_hz && fit.damping_ratio);
   const double k = 2 * kMjsceneSuspension.stiffness, c = 2 * kMjsceneSuspension.damping, mass = 120.0;
@@ -391,23 +327,12 @@ TEST(MujocoScene, VehicleHeaveAtFineStepsIsTheContinuousChassisOnItsSprings) {
   EXPECT_LT(*fit.residual, 1e-3);  // one clean mode
 }
 
-// The springs Box2D 2.4 gives the scene's joints from their own tunings (the modal solve aside).
-std::vector<std::optional<JointSpring>> mjscene_box2d_springs(const Scene& s) {
-  scene::Box2DScene box2d(s, s.mass_model);
-  EXPECT_FALSE(box2d.error()) << s.name;
-  std::vector<std::optional<JointSpring>> springs;
-  for (const scene::JointTuning& t : box2d.tunings()) {
-    springs.push_back(t.stiffness > 0.0 ? std::optional<JointSpring>(JointSpring{t.stiffness, t.damping}) : std::nullopt);
-  }
-  return springs;
-}
-
 // Revolute pins are hinges of MuJoCo's tree, exactly rigid: the chain's anchors coincide to round-off after its
 // whole swing; the bridge's pin to its right bank closes a loop and is an <equality><connect>, MuJoCo-soft (1.4 cm under the loaded bridge).
 TEST(MujocoScene, RevolutePinsAreRigidHingesAndTheLoopClosingPinAConnect) {
   for (const char* name : {"chain", "bridge"}) {
-    const Scene s = mjscene_preset(name);
-    SceneBuild b{&s, mjscene_box2d_springs(s), {}};
+    const Scene s = load_preset(name);
+    SceneBuild b{&s, test_support::scene_cases::box2d_springs(s), {}};
     std::optional<FieldError> error;
     auto world = kMujocoSceneBackend.build(b, error);
     ASSERT_TRUE(world) << name;
@@ -416,7 +341,8 @@ TEST(MujocoScene, RevolutePinsAreRigidHingesAndTheLoopClosingPinAConnect) {
     for (std::size_t i = 0; i < s.joints.size(); ++i) {
       const JointSettings& j = s.joints[i];
       if (j.kind != JointKind::revolute) continue;
-      const std::size_t a = mjscene_body(s, j.body_a), bb = mjscene_body(s, j.body_b);
+      const auto a = static_cast<std::size_t>(test_support::scene_cases::body_of(s, j.body_a));
+      const auto bb = static_cast<std::size_t>(test_support::scene_cases::body_of(s, j.body_b));
       // The anchor carried by each body from the start: rotate its offset from the body origin.
       auto carried = [&](std::size_t body) {
         const scene::BodyState st = world->body(body);
@@ -435,41 +361,19 @@ TEST(MujocoScene, RevolutePinsAreRigidHingesAndTheLoopClosingPinAConnect) {
 }
 
 // Each preset with Box2D's own tuning of its joints: built and run finite for its whole duration, or refused
-// naming the feature and the engine.
+// naming the feature and the engine. `stiff` is refused: its 20 Hz spring at 60 fps (omega h = 2.1) would blow
+// up on MuJoCo's explicit passive spring, as the preset shows semi-implicit Euler does.
 TEST(MujocoScene, EveryPresetRunsFiniteOrIsRefusedNamingTheFeature) {
-  for (const char* name : {"bridge", "bridge_deck", "buddhas", "chain", "heavy_on_light", "mouse", "stiff",
-                           "vehicle", "vehicle_per_spring"}) {
-    const Scene s = mjscene_preset(name);
-    SceneBuild b{&s, mjscene_box2d_springs(s), {}};
-    std::optional<FieldError> error;
-    auto world = kMujocoSceneBackend.build(b, error);
-    if (!world) {
-      ASSERT_TRUE(error) << name;
-      EXPECT_NE(error->rule.find("mujoco"), std::string::npos) << name << ": " << error->rule;
-      std::printf("%s: refused, %s: %s\n", name, error->field.c_str(), error->rule.c_str());
-      continue;
-    }
-    const int frames = scene::frame_count(s.world);
-    for (int f = 0; f < frames; ++f) world->step_frame(f);
-    if (std::string(name) == "stiff") {
-      // The preset's point: a 20 Hz spring at 60 fps (omega h = 2.1) blows up on semi-implicit Euler, which is
-      // how MuJoCo steps a passive tendon spring; the backend reports the blow-up (NaN), not MuJoCo's reset.
-      EXPECT_FALSE(std::isfinite(world->body(1).centre.y()));
-      EXPECT_EQ(world->body(0).centre.y(), s.bodies[0].position.y());  // the static anchor stays put
-      continue;
-    }
-    for (std::size_t i = 0; i < s.bodies.size(); ++i) {
-      const scene::BodyState st = world->body(i);
-      EXPECT_TRUE(std::isfinite(st.centre.x()) && std::isfinite(st.centre.y()) && std::isfinite(st.angle))
-          << name << " " << s.bodies[i].id;
-      EXPECT_GT(st.centre.y(), s.world.bounds[1]) << name << " " << s.bodies[i].id << ": fell out of the world";
-    }
-    std::printf("%s: %d frames run in mujoco\n", name, frames);
-  }
+  test_support::scene_cases::expect_presets_run_or_refused(kMujocoSceneBackend);
+  const Scene s = load_preset("stiff");
+  std::optional<FieldError> error;
+  EXPECT_FALSE(test_support::scene_cases::build_scene(kMujocoSceneBackend, s, test_support::scene_cases::box2d_springs(s), error));
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->field, "joints.0");
 }
 
 TEST(MujocoScene, RefusesWhatMujocoCannotRepresentNamingTheFieldAndEngine) {
-  Scene s = mjscene_preset("vehicle");
+  Scene s = load_preset("vehicle");
   s.bodies[4].restitution = 0.5;
   SceneBuild b{&s, {kMjsceneSuspension, kMjsceneSuspension}, {}};
   std::optional<FieldError> error;
@@ -479,7 +383,7 @@ TEST(MujocoScene, RefusesWhatMujocoCannotRepresentNamingTheFieldAndEngine) {
   EXPECT_NE(error->rule.find("mujoco"), std::string::npos) << error->rule;
 
   // A wheel cannot nest a body another wheel already nests (MuJoCo's tree has one parent per body).
-  Scene twice = mjscene_preset("vehicle");
+  Scene twice = load_preset("vehicle");
   twice.joints[1].body_b = twice.joints[0].body_b;
   twice.joints[1].anchor_b = twice.joints[0].anchor_b;
   SceneBuild b2{&twice, {kMjsceneSuspension, kMjsceneSuspension}, {}};
