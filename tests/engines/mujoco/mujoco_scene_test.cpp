@@ -19,6 +19,7 @@
 #include "softtune/engines/engine_model.h"
 #include "softtune/engines/mujoco.h"
 #include "softtune/response_fit.h"
+#include "softtune/scene/runner.h"
 #include "softtune/scene/scene_geometry.h"
 #include "../scene_backend_cases.h"
 
@@ -370,6 +371,32 @@ TEST(MujocoScene, EveryPresetRunsFiniteOrIsRefusedNamingTheFeature) {
   EXPECT_FALSE(test_support::scene_cases::build_scene(kMujocoSceneBackend, s, test_support::scene_cases::box2d_springs(s), error));
   ASSERT_TRUE(error);
   EXPECT_EQ(error->field, "joints.0");
+}
+
+// The runner (scene/runner.h) runs the vehicle preset in MuJoCo through the backend: the answer names the
+// engine and gives the suspension's fields under MuJoCo's names; the wheels stay on their axes exactly (a
+// slide joint of MuJoCo's tree: the runner's constraint error from the poses is round-off).
+TEST(MujocoScene, RunnerRunsThePresetInMujoco) {
+  const Scene s = load_preset("vehicle");
+  scene::RunOptions options;
+  options.backend = &kMujocoSceneBackend;
+  const scene::SceneResult r = scene::run_scene(s, options);
+  ASSERT_FALSE(r.error) << r.error->field << ": " << r.error->rule;
+  EXPECT_EQ(r.engine, "mujoco");
+  EXPECT_EQ(r.engine_version, "MuJoCo 2.2.2");
+  EXPECT_TRUE(r.finite);
+  EXPECT_TRUE(r.left_world.empty());
+  ASSERT_EQ(r.joint_fields.size(), 2u);
+  ASSERT_FALSE(r.joint_fields[0].empty());
+  EXPECT_EQ(r.joint_fields[0][0].name, "joint(slide)/@stiffness");
+  EXPECT_GT(r.joint_fields[0][0].value, 0.0);
+  EXPECT_LT(r.max_constraint_error, 1e-9);
+  for (const scene::ProbeResult& p : r.probes) {
+    if (p.id == "heave" && p.measured.frequency_hz && p.measured.damping_ratio) {
+      std::printf("runner, vehicle in mujoco: heave %.3f Hz zeta %.3f, max constraint error %.2e m\n",
+                  *p.measured.frequency_hz, *p.measured.damping_ratio, r.max_constraint_error);
+    }
+  }
 }
 
 TEST(MujocoScene, RefusesWhatMujocoCannotRepresentNamingTheFieldAndEngine) {
