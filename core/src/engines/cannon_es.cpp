@@ -141,17 +141,24 @@ void report_distance(EngineReport& out, const Target& t, const SettingValues& va
     return report_lines::inexact(out, std::nullopt, t, kCannonEsModel.name,
                                  "the poles are too fast for the step, or linearDamping 1 stops the body");
   }
-  const double alpha = z.one_minus_product / (s.h * s.l), beta = 1.0 - z.product / s.l;
+  const double alpha = z.one_minus_product / (s.h * s.l);
+  double beta = 1.0 - z.product / s.l;
+  // Less damping than linearDamping gives needs beta < 0, a negative relaxation; 1 + 4 d must stay above 0
+  // (a and eps keep their sign): below that, the nearest legal is relaxation 0 (no SPOOK damping at all).
+  const bool undamped_floor = !(1.0 + 4.0 * beta / (s.bake * alpha) > 0.0);
+  if (undamped_floor) beta = 0.0;
   const double big_d = 1.0 + 4.0 * beta / (s.bake * alpha);
   const double q = 4.0 * (1.0 - beta) / (s.bake * alpha) - 1.0;
-  if (!(q > 0.0) || !(big_d > 0.0) || !std::isfinite(q)) {
+  if (!(q > 0.0) || !std::isfinite(q)) {
     return report_lines::inexact(out, std::nullopt, t, kCannonEsModel.name,
-                                 "SPOOK cannot reach a spring this stiff at this setSpookParams timeStep (it needs "
-                                 "stiffness above infinity): bake with a shorter timeStep");
+                                 "SPOOK cannot reach a spring this stiff at this setSpookParams timeStep (it would "
+                                 "need stiffness above infinity): bake with a shorter timeStep");
   }
   const double exact_k = 4.0 * s.m / (s.bake * s.bake * q), exact_d = (big_d - 1.0) / 4.0;
   give_exact(out, t, spook_parameters(exact_k, exact_d), predict_spook(s, values, exact_k, exact_d),
-             "the SPOOK step cannot place these poles");
+             undamped_floor ? "linearDamping damps more than asked, and cancelling it needs a relaxation below "
+                              "-1/4 (1 + 4 relaxation <= 0): the nearest is relaxation 0"
+                            : "the SPOOK step cannot place these poles");
 }
 
 EngineReport report(const Target& t, const SettingValues& values) {

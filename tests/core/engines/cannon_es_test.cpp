@@ -184,5 +184,19 @@ TEST(CannonEsModel, SpookBakedAt60FpsRunsFasterAt120Fps) {
   EXPECT_TRUE(meets_response(*r120.exact_predicted, omega, 0.1));
 }
 
+TEST(CannonEsModel, SlowUndampedSpookGivesRelaxationZeroAsTheNearestLegal) {
+  // 0.15 Hz, zeta 0 at 30 fps: cancelling linearDamping 0.01 (zeta 0.0053 alone) needs 1 + 4 relaxation < 0.
+  // The nearest legal is relaxation 0, its predicted damping ratio linearDamping's and the step's own.
+  const double m = 1e-3, h = 1.0 / 30.0, omega = 2.0 * testing::kPi * 0.15;
+  const EngineReport r = kCannonEsModel.report(target(0.15, 0.0, m, h, spring_constants(m, omega, 0.0)),
+                                               cannon_settings(kCannonEsDistance, 0.01));
+  ASSERT_TRUE(r.exact);
+  EXPECT_EQ((*r.exact)[1].value, 0.0);
+  const double body_zeta = -std::log(0.99) / (2.0 * omega);  // pow(0.99, h) per step: rate -ln(0.99) / 2
+  EXPECT_NEAR(*r.exact_predicted->damping_ratio, body_zeta, 2e-3);
+  EXPECT_TRUE(within_nearest(*r.exact_predicted, omega, 0.0));
+  EXPECT_EQ(r.warnings.back().code, WarningCode::engine_inexact);
+}
+
 }  // namespace
 }  // namespace softtune::engines
