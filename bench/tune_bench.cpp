@@ -92,8 +92,8 @@ void engine_reports(benchmark::State& state, softtune::SoftMode mode, double zet
 void BM_EngineReportsExact(benchmark::State& state) { engine_reports(state, softtune::SoftMode::exact, 0.5); }
 void BM_EngineReportsStandard(benchmark::State& state) { engine_reports(state, softtune::SoftMode::standard, 0.5); }
 void BM_EngineReportsUndamped(benchmark::State& state) { engine_reports(state, softtune::SoftMode::exact, 0.0); }
-// -1: all models together; 0..7: one engine each (the label names it).
-BENCHMARK(BM_EngineReportsExact)->DenseRange(-1, 7);
+// -1: all models together; 0..n-1: one engine each (the label names it), every registered model.
+BENCHMARK(BM_EngineReportsExact)->DenseRange(-1, static_cast<int>(softtune::engines::engine_models().size()) - 1);
 BENCHMARK(BM_EngineReportsStandard)->Arg(-1);
 BENCHMARK(BM_EngineReportsUndamped)->Arg(-1);
 
