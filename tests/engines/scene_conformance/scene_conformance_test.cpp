@@ -23,6 +23,7 @@
 #include "softtune/scene/box2d_backend.h"
 #include "softtune/scene/runner.h"
 #include "bullet_scene.h"
+#include "mujoco_scene.h"
 #include "ode_scene.h"
 #include "../../presets_dir.h"
 
@@ -34,7 +35,8 @@ using test_support::kPresets;
 // The backends under test. Until the registry (find_scene_backend, spine A of issue #32) lands, this list;
 // then every registered backend.
 std::span<const SceneBackend* const> conformance_backends() {
-  static const SceneBackend* const kAll[] = {&kBox2DV24SceneBackend, &kBulletSceneBackend, &kOdeSceneBackend};
+  static const SceneBackend* const kAll[] = {&kBox2DV24SceneBackend, &kBulletSceneBackend, &kOdeSceneBackend,
+                                             &engines::kMujocoSceneBackend};
   return kAll;
 }
 
