@@ -94,9 +94,9 @@ std::string conformance_number(std::optional<double> v, const char* format) {
 
 TEST(SceneConformance, EveryPresetInEveryEngineMeetsItsRequestAndTheCopyTest) {
   std::string table =
-      "| preset | engine | probe | asked f (Hz), zeta | with Box2D's k, c | measured f (Hz), zeta | error f, zeta | engine runs | "
-      "copy: delta f, zeta |\n"
-      "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+      "| preset | engine | probe | asked f (Hz), zeta | with Box2D's k, c | measured f (Hz), zeta | error f, zeta | fit residual | "
+      "engine runs | copy: delta f, zeta |\n"
+      "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
   std::string refusals;
   for (const SceneBackend* backend : conformance_backends()) {
     const engines::SettingValues settings = conformance_defaults(*backend);
@@ -185,7 +185,8 @@ TEST(SceneConformance, EveryPresetInEveryEngineMeetsItsRequestAndTheCopyTest) {
                  conformance_number(p->measured.frequency_hz, "%.3f") + ", " +
                  conformance_number(p->measured.damping_ratio, "%.3f") + " | " +
                  conformance_number(*p->frequency_error * 100.0, "%+.2f %%") + ", " +
-                 conformance_number(p->damping_ratio_error, "%+.4f") + " | " + std::to_string(runs) + " | " +
+                 conformance_number(p->damping_ratio_error, "%+.4f") + " | " +
+                 conformance_number(p->measured.residual, "%.4f") + " | " + std::to_string(runs) + " | " +
                  conformance_number(*df * 100.0, "%+.3f %%") + ", " + conformance_number(dz, "%+.4f") + " |\n";
       }
     }
