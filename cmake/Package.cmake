@@ -3,6 +3,7 @@
 # package):
 #   bin/softtune, bin/softtune-raster        the binary and its raster helper (found beside the binary)
 #   share/softtune/web/, share/softtune/presets/   the page (with uPlot from web/vendor/) and the scenes
+#   share/softtune/engines/, share/softtune/node_modules/   the node worker and its Jolt and Rapier modules
 #   share/doc/softtune/                      README.md and docs/
 #   lib/systemd/system/softtune.service      `softtune serve` on 127.0.0.1:8080 (packaging/softtune.service.in)
 include(GNUInstallDirs)
@@ -16,6 +17,18 @@ set(SOFTTUNE_INSTALL_PRESETSDIR ${CMAKE_INSTALL_DATADIR}/softtune/presets)
 install(TARGETS softtune softtune-raster RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/web/ DESTINATION ${SOFTTUNE_INSTALL_WEBDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/presets/ DESTINATION ${SOFTTUNE_INSTALL_PRESETSDIR})
+# The node worker and the JavaScript scene engines it loads (engines/node_worker/node_worker.cpp finds the
+# worker in share/softtune/engines/; node resolves the engines' packages from share/softtune/node_modules/).
+foreach(room node_worker rapier jolt)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/engines/${room}/ DESTINATION ${CMAKE_INSTALL_DATADIR}/softtune/engines/${room}
+          FILES_MATCHING PATTERN "*.mjs")
+endforeach()
+foreach(package jolt-physics @dimforge/rapier2d-compat)
+  if(EXISTS ${PROJECT_SOURCE_DIR}/node_modules/${package})
+    install(DIRECTORY ${PROJECT_SOURCE_DIR}/node_modules/${package}/ DESTINATION ${CMAKE_INSTALL_DATADIR}/softtune/node_modules/${package})
+  endif()
+endforeach()
+install(FILES ${PROJECT_SOURCE_DIR}/package.json DESTINATION ${CMAKE_INSTALL_DATADIR}/softtune)  # "type": "module"
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
 # The unit names the installed paths, so it is written at install time, when the prefix is known (/usr in
