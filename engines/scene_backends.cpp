@@ -4,6 +4,8 @@
 
 #include <array>
 
+#include "bullet_scene.h"
+#include "ode_scene.h"
 #include "softtune/scene/box2d_backend.h"
 
 namespace softtune::engines {
@@ -11,6 +13,8 @@ namespace softtune::engines {
 std::span<const scene::SceneBackend* const> scene_backends() {
   static constexpr std::array kBackends = {
       &scene::kBox2DV24SceneBackend,
+      &scene::kBulletSceneBackend,
+      &scene::kOdeSceneBackend,
   };
   return kBackends;
 }
