@@ -59,6 +59,11 @@ TEST(CheckRequest, TheReportNamesTheEngineItRan) {
   EXPECT_TRUE(named.json["passed"].get<bool>());
   ASSERT_EQ(named.json["cases"].size(), plain.json["cases"].size());
   EXPECT_EQ(named.json["cases"][0]["figures"], plain.json["cases"][0]["figures"]);
+  // In an engine that cannot represent the preset, its case fails with the engine's refusal.
+  const CheckAnswer bullet = run_check_request({{"presets", {"mouse"}}, {"engine", "bullet"}}, SOFTTUNE_PRESETS_DIR);
+  EXPECT_EQ(bullet.json["engine"]["name"], "bullet");
+  EXPECT_FALSE(bullet.json["passed"].get<bool>());
+  EXPECT_EQ(bullet.json["cases"][0]["problem"]["field"], "joints.0.max_force");
 }
 
 TEST(CheckRequest, InlineScenesAndPresetsAnswerJsonOrJunit) {

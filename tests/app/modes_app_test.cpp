@@ -74,6 +74,8 @@ TEST(ModesApp, TheAnswerNamesTheEngine) {
   EXPECT_EQ(named, run_modes({{"preset", "vehicle_per_spring"}}, kPresets));
   EXPECT_EQ(named["engine"]["name"], "box2d_v2_4");
   EXPECT_FALSE(named["engine"]["version"].get<std::string>().empty());
+  // Another engine's step is not linearised: refused naming `engine`, never Box2D's modes under its name.
+  EXPECT_EQ(problem_field([] { return run_modes({{"preset", "vehicle_per_spring"}, {"engine", "ode"}}, kPresets); }), "engine");
 }
 
 json vehicle_with(const json& target) {

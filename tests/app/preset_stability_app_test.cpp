@@ -35,6 +35,7 @@ TEST(PresetStabilityApp, RequestRulesNameTheField) {
   EXPECT_EQ(problem_of({{"preset", "vehicle"}}).field, "preset");  // modal-tuned
   // The scene engine rides beside the preset; an unknown one, or a setting it lacks, is named.
   EXPECT_EQ(problem_of({{"preset", "stiff"}, {"engine", "havok"}}).field, "engine");
+  EXPECT_EQ(problem_of({{"preset", "stiff"}, {"engine", "bullet"}}).field, "engine");  // the search is Box2D's
   EXPECT_EQ(problem_of({{"preset", "stiff"}, {"engine_settings", {{"noSuchSetting", 1}}}}).field, "engine_settings.noSuchSetting");
 }
 

@@ -259,6 +259,26 @@ TEST(Simulate, EngineSettingsRunAndUnknownEnginesOrSettingsAreRefused) {
   EXPECT_EQ(run_simulate(bare, kPresets)["engine"]["name"], "box2d_v2_4");
 }
 
+// A scene the engine cannot represent is the backend's refusal: 422 naming the scene feature and the engine,
+// never a run in another engine; one it can runs there and says so.
+TEST(Simulate, AnEnginesRefusalNamesTheFeatureAndTheEngine) {
+  try {
+    run_simulate({{"preset", "mouse"}, {"engine", "bullet"}}, kPresets);
+    ADD_FAILURE() << "bullet ran the capped mouse";
+  } catch (const Problem& p) {
+    EXPECT_EQ(p.status, 422);
+    EXPECT_EQ(p.field, "joints.0.max_force");
+    EXPECT_NE(p.detail.find("bullet"), std::string::npos) << p.detail;
+  }
+  const json ode = run_simulate({{"preset", "buddhas"}, {"engine", "ode"}}, kPresets);
+  EXPECT_EQ(ode["engine"]["name"], "ode");
+  EXPECT_NE(std::find(ode["stages"].begin(), ode["stages"].end(), "engine_step"), ode["stages"].end());
+  EXPECT_EQ(std::find(ode["stages"].begin(), ode["stages"].end(), "box2d_step"), ode["stages"].end());
+  for (const json& j : ode["joints"]) {
+    if (j.contains("parameters")) EXPECT_EQ(j["parameters"]["engine"], "ode") << j["id"];
+  }
+}
+
 TEST(Simulate, TheSceneEnginesIndexListsEveryBackendWithItsSettings) {
   const json index = scene_engines_index();
   const auto all = engines::scene_backends();
