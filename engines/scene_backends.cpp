@@ -5,6 +5,7 @@
 #include <array>
 
 #include "bullet_scene.h"
+#include "mujoco_scene.h"
 #include "ode_scene.h"
 #include "softtune/scene/box2d_backend.h"
 
@@ -15,6 +16,7 @@ std::span<const scene::SceneBackend* const> scene_backends() {
       &scene::kBox2DV24SceneBackend,
       &scene::kBulletSceneBackend,
       &scene::kOdeSceneBackend,
+      &kMujocoSceneBackend,
   };
   return kBackends;
 }

@@ -310,6 +310,35 @@ export const ENGINE_SYNTAX = {
       ];
     },
   },
+  cannon_es: {
+    label: 'cannon-es', language: 'JavaScript', comment: slashes, literal: String,
+    fields: {
+      'Spring.stiffness': { slot: 'stiffness', unit: 'N/m' },
+      'Spring.damping': { slot: 'damping', unit: 'N s/m' },
+      'setSpookParams.stiffness': { slot: 'spookStiffness', unit: 'N/m' },
+      'setSpookParams.relaxation': { slot: 'relaxation', unit: 'steps' },
+    },
+    // A runnable script given CANNON, world, ground, body (and the spring's restLength and local anchors, or
+    // the constraint's distance): the body's damping, the joint with the answer's numbers, one world step.
+    code(w, settings, h) {
+      const damp = isNumber(settings.linearDamping) ? settings.linearDamping : undefined;
+      const spook = w.has('spookStiffness') || w.has('relaxation');
+      const bake = isNumber(settings.spookTimeStep) && settings.spookTimeStep > 0 ? settings.spookTimeStep : h;
+      return [
+        ...(damp !== undefined ? [`body.linearDamping = ${damp};`, `body.angularDamping = ${damp};`] : []),
+        ...(isNumber(settings.iterations) ? [`world.solver.iterations = ${settings.iterations};`] : []),
+        ...(spook
+          ? ['const constraint = new CANNON.DistanceConstraint(ground, body, distance);',
+            w.line(['spookStiffness', 'relaxation'], (k, d) =>
+              `constraint.distanceEquation.setSpookParams(${k}, ${d}, ${isNumber(bake) ? bake : 'world.dt'});  // stiffness, relaxation, the timeStep they are baked for`),
+            'world.addConstraint(constraint);']
+          : [w.line(['stiffness', 'damping'], (k, c) =>
+            `const spring = new CANNON.Spring(ground, body, { restLength, localAnchorA, localAnchorB, stiffness: ${k}, damping: ${c} });`),
+          "world.addEventListener('postStep', () => spring.applyForce());  // the force for the next step"]),
+        ...(isNumber(h) ? [`world.step(${h});  // a fixed step of h`] : []),
+      ];
+    },
+  },
 };
 
 /// Display names of the engines, including the keys that carry only the older fields.

@@ -5,6 +5,8 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <Eigen/SVD>
+
+#include "softtune/support/run_limit.h"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -200,13 +202,19 @@ ReducedSystem reduce(const LinearModel& m) {
   const Eigen::MatrixXd& nn = s.null_space;
   s.mass = nn.transpose() * mass.asDiagonal() * nn;
   Eigen::MatrixXd geometric = Eigen::MatrixXd::Zero(n, n);
+  // The calling request's run-time limit (support/run_limit.h) between rows and between the solves below:
+  // a crowded scene has thousands of contact rows, each Hessian O(n^2); each solve alone is bounded by the
+  // body cap (kMaxModeBodies: 100 bodies, at most 600 x 600; bench/modes_bench.cpp BM_LargestSolves).
+  support::check_run_limit();
   for (const Row& row : m.rows) {
+    support::check_run_limit();
     if (row.force != 0.0) geometric -= row.force * row_hessian(m, row);
   }
   s.geometric_stiffness = nn.transpose() * geometric * nn;
   s.soft_rows.resize(m.rows.size());
   std::vector<double> k(m.rows.size()), c(m.rows.size());
   for (std::size_t i = 0; i < m.rows.size(); ++i) {
+    support::check_run_limit();
     if (!m.rows[i].rigid) s.soft_rows[i] = row_jacobian(m, m.rows[i]) * nn;
     k[i] = m.rows[i].stiffness;
     c[i] = m.rows[i].damping;
@@ -221,6 +229,7 @@ void set_springs(ReducedSystem& s, const std::vector<double>& k, const std::vect
   s.row_stiffness = k;
   s.damping = Eigen::MatrixXd::Zero(d, d);
   for (std::size_t i = 0; i < s.soft_rows.size(); ++i) {
+    support::check_run_limit();
     if (s.soft_rows[i].size() == 0) continue;
     const Eigen::MatrixXd outer = s.soft_rows[i].transpose() * s.soft_rows[i];
     s.stiffness += k[i] * outer;
@@ -236,6 +245,7 @@ std::vector<Mode> modes_of(const LinearModel& m, const ReducedSystem& s, double 
   const Eigen::MatrixXd k = 0.5 * (s.stiffness + s.stiffness.transpose());
   const Eigen::MatrixXd& mass = s.mass;
   const Eigen::MatrixXd& c = s.damping;
+  support::check_run_limit();
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> undamped(k, mass);
   const Eigen::VectorXd omega2 = undamped.eigenvalues();
   const Eigen::MatrixXd phi = undamped.eigenvectors();  // M-orthonormal columns, ascending omega0^2
@@ -245,6 +255,7 @@ std::vector<Mode> modes_of(const LinearModel& m, const ReducedSystem& s, double 
   a.topRightCorner(d, d).setIdentity();
   a.bottomLeftCorner(d, d) = -mass_llt.solve(k);
   a.bottomRightCorner(d, d) = -mass_llt.solve(c);
+  support::check_run_limit();
   Eigen::EigenSolver<Eigen::MatrixXd> continuous(a);
   const auto cont_roots = assign_roots(continuous.eigenvalues(), continuous.eigenvectors(), phi, mass);
 
@@ -258,6 +269,7 @@ std::vector<Mode> modes_of(const LinearModel& m, const ReducedSystem& s, double 
     ad.topRightCorner(d, d) = h * sm;
     ad.bottomLeftCorner(d, d) = -h * sk;
     ad.bottomRightCorner(d, d) = sm;
+    support::check_run_limit();
     Eigen::EigenSolver<Eigen::MatrixXd> discrete(ad);
     disc_roots = assign_roots(discrete.eigenvalues(), discrete.eigenvectors(), phi, mass);
   }

@@ -6,6 +6,7 @@
 #include "softtune/render/content_hash.h"
 #include "softtune/render/png.h"
 #include "softtune/render/tessellate.h"
+#include "softtune/support/run_limit.h"
 
 namespace softtune::render {
 
@@ -46,6 +47,10 @@ struct JobState {
   std::atomic<int> done{0};
   std::atomic<bool> failed{false};
   std::atomic<std::int64_t> render_ns{0}, png_ns{0};
+  // The job's CPU time so far (PipelineOptions::job_cpu_seconds), ns: workers' threads and raster processes.
+  double cpu_limit_s = 0.0;
+  std::atomic<std::int64_t> cpu_ns{0};
+  std::atomic<bool> over_budget{false};
 
   mutable std::mutex mutex;  // guards the fields below
   mutable std::condition_variable cv;
@@ -132,6 +137,9 @@ std::optional<std::string> PreviewJob::frame_png(int n) const {
 std::shared_ptr<const Preview> PreviewJob::wait() const {
   std::unique_lock lock(state_->mutex);
   state_->cv.wait(lock, [this] { return state_->finished; });
+  if (!state_->result && state_->over_budget.load(std::memory_order_acquire)) {
+    throw support::RunStopped(support::RunStopped::Why::budget, state_->cpu_ns.load() * 1e-9, state_->cpu_limit_s);
+  }
   if (!state_->result) throw std::runtime_error("preview " + state_->id + " failed: " + state_->error);
   return state_->result;
 }
@@ -211,6 +219,7 @@ std::shared_ptr<PreviewJob> FramePipeline::submit(std::string_view canonical_req
     job = std::make_shared<JobState>();
     job->id = id;
     job->settings = settings;
+    job->cpu_limit_s = options_.job_cpu_seconds;
     in_flight_[id] = job;
   }
   try {
@@ -296,6 +305,7 @@ void FramePipeline::run_task(const Task& task, std::unique_ptr<Renderer>& render
       const ImageSize size = job.settings.size;
       pixels.resize(rgba_bytes(size));
       if (!renderer) renderer = options_.make_renderer();
+      const double cpu0 = support::thread_cpu_seconds() + renderer->raster_cpu_seconds();
       const auto t0 = Clock::now();
       renderer->render(job.frames.frames[task.index], job.cameras[task.index], size, pixels);
       job.filmstrip->place(task.index, pixels, size);
@@ -310,6 +320,7 @@ void FramePipeline::run_task(const Task& task, std::unique_ptr<Renderer>& render
       job.render_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count());
       job.png_ns.fetch_add(std::chrono::duration_cast<std::chrono::nanoseconds>(t2 - t1).count());
       if (job.clip) feed_clip(job, false);
+      charge_frame(job, support::thread_cpu_seconds() + renderer->raster_cpu_seconds() - cpu0);
     } catch (const std::exception& e) {
       std::lock_guard lock(job.mutex);
       if (job.error.empty()) job.error = "frame " + std::to_string(task.index) + ": " + e.what();
@@ -318,6 +329,21 @@ void FramePipeline::run_task(const Task& task, std::unique_ptr<Renderer>& render
   }
   // The last frame's worker sees every other worker's writes (acq_rel) and finishes the job.
   if (job.done.fetch_add(1, std::memory_order_acq_rel) + 1 == job.settings.frames) finish(job);
+}
+
+// Adds a frame's CPU time to its job; past the job's limit the job fails, so its frames still queued are
+// skipped (run_task) and the preview ends within one frame per worker of its limit.
+void FramePipeline::charge_frame(JobState& job, double cpu_seconds) {
+  const std::int64_t total = job.cpu_ns.fetch_add(static_cast<std::int64_t>(cpu_seconds * 1e9)) +
+                             static_cast<std::int64_t>(cpu_seconds * 1e9);
+  if (job.cpu_limit_s <= 0.0 || total * 1e-9 <= job.cpu_limit_s) return;
+  std::lock_guard lock(job.mutex);
+  if (job.error.empty()) {
+    job.error = "its frames took " + std::to_string(total * 1e-9) + " s of CPU time, past the limit of " +
+                std::to_string(job.cpu_limit_s) + " s";
+  }
+  job.over_budget.store(true, std::memory_order_release);
+  job.failed.store(true, std::memory_order_release);
 }
 
 // Hands the encoder every frame whose turn has come, in order. Without `wait` it returns at once when

@@ -4,6 +4,7 @@
 // separate process, a server or a `softtune tune` never pays that, a fault in the GL stack fails one
 // frame instead of ending the server, a hung frame is killed, and a renderer destroyed when idle (the
 // frame pipeline does so) gives its memory back.
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 
@@ -27,14 +28,24 @@ class ProcessRenderer final : public Renderer {
     tessellate(frame, view, options_.msaa_samples == 0, mesh_);
     // A process that died with an earlier frame is replaced.
     if (!process_ || !process_->alive()) process_.emplace(options_);
-    process_->rasterize(mesh_.vertices, size, rgba);
+    const double before = process_->cpu_seconds();
+    try {
+      process_->rasterize(mesh_.vertices, size, rgba);
+    } catch (...) {
+      raster_cpu_ += std::max(0.0, process_->cpu_seconds() - before);
+      throw;
+    }
+    raster_cpu_ += std::max(0.0, process_->cpu_seconds() - before);
     draw_text_overlay(frame, view, rgba);
   }
+
+  double raster_cpu_seconds() const override { return raster_cpu_; }
 
  private:
   RasterProcessOptions options_;
   std::optional<RasterProcess> process_;
   Mesh mesh_;
+  double raster_cpu_ = 0.0;  ///< s, summed over frames and processes
 };
 
 }  // namespace

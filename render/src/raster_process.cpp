@@ -12,6 +12,8 @@
 #include <chrono>
 #include <climits>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -101,6 +103,24 @@ RasterProcess::RasterProcess(const RasterProcessOptions& options) : options_(opt
 
 RasterProcess::~RasterProcess() {
   if (alive()) close_and_wait();
+}
+
+double RasterProcess::cpu_seconds() const {
+  if (pid_ <= 0) return 0.0;
+  std::ifstream in("/proc/" + std::to_string(pid_) + "/stat");
+  std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Fields after the command name, which is in parentheses and may hold spaces: state is field 3,
+  // utime and stime fields 14 and 15 (proc(5)).
+  const std::size_t close = stat.rfind(')');
+  if (close == std::string::npos) return 0.0;
+  std::istringstream fields(stat.substr(close + 1));
+  std::string field;
+  unsigned long long utime = 0, stime = 0;
+  for (int i = 3; i <= 15 && fields >> field; ++i) {
+    if (i == 14) utime = std::stoull(field);
+    if (i == 15) stime = std::stoull(field);
+  }
+  return static_cast<double>(utime + stime) / static_cast<double>(::sysconf(_SC_CLK_TCK));
 }
 
 int RasterProcess::close_and_wait() {

@@ -36,6 +36,9 @@ class RasterProcess {
 
   bool alive() const { return pid_ > 0; }
   pid_t pid() const { return pid_; }
+  /// CPU time (user and system) the process has used so far, s (/proc/PID/stat, 10 ms ticks); 0 when
+  /// it is not running or cannot be read.
+  double cpu_seconds() const;
   /// Closes the socket, waits for the exit and returns the wait status (tests: a clean exit is 0).
   int close_and_wait();
 

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "softtune/scene/box2d_backend.h"
+#include "softtune/scene/engine_tuning.h"
 #include "softtune/scene/probe_geometry.h"
 #include "softtune/validation.h"
 
@@ -283,6 +284,8 @@ SceneResult run_scene(const Scene& scene, const RunOptions& options) {
     r.error = e;
     return r;
   }
+  // In an engine other than Box2D 2.4, modal targets and tuned joints are solved by that engine's own runs.
+  if (tunes_in_engine(scene, options)) return run_scene_tuned_in_engine(scene, options);
   // Modes first (modal_tuning.h): the run is then of the scene with the solved springs in its joints.
   if (scene.modal_tuning) {
     Scene tuned;

@@ -16,6 +16,7 @@
 #include "app/scene_frames.h"
 #include "codec/tune_codec.h"
 #include "softtune/render/frame_schedule.h"
+#include "softtune/support/run_limit.h"
 #include "softtune/render/oscillator_frames.h"
 
 namespace softtune::app {
@@ -262,6 +263,8 @@ json PreviewService::start(const json& request, const std::string& presets_dir, 
     if (may_wait) {
       try {
         job->wait();
+      } catch (const support::RunStopped&) {
+        throw;  // past the frames' CPU limit: the service's 422 request-over-budget
       } catch (const std::runtime_error& e) {
         throw Problem(500, "Render failed", "", e.what());
       }

@@ -8,7 +8,7 @@ namespace softtune::app {
 namespace {
 
 // Rates measured on the reference machine (scene_cost.h).
-constexpr double kBodyStepSeconds = 1e-6, kIterationSeconds = 50e-9;
+constexpr double kBodyStepSeconds = 0.35e-6, kJointIterationSeconds = 11e-9;
 constexpr double kProbeFrameBytes = 150, kProbeFrameSeconds = 200e-9;
 constexpr double kSnapshotBodyBytes = 600, kSnapshotJointBytes = 400, kSnapshotItemSeconds = 1e-6;
 
@@ -24,7 +24,9 @@ RequestCost scene_cost(const scene::Scene& s, const scene::RunOptions& options, 
   const double iterations = std::max(0, w.velocity_iterations) + std::max(0, w.position_iterations);
   const double items = static_cast<double>(s.bodies.size() + s.joints.size());
   RequestCost cost;
-  cost.cpu_seconds = frames * substeps * items * (kBodyStepSeconds + iterations * kIterationSeconds);
+  cost.cpu_seconds = frames * substeps *
+                     (static_cast<double>(s.bodies.size()) * kBodyStepSeconds +
+                      static_cast<double>(s.joints.size()) * iterations * kJointIterationSeconds);
   const double probes = static_cast<double>(s.probes.size());
   cost.cpu_seconds += probes * frames * kProbeFrameSeconds;
   cost.peak_bytes = probes * frames * kProbeFrameBytes;

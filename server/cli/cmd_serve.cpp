@@ -25,6 +25,8 @@ constexpr const char* kServeHelp = R"(softtune serve: the REST API under /api/v1
   --host H       address to listen on (default 127.0.0.1)
   --port P       TCP port (default 8080; 0 picks a free one)
   --threads N    worker threads, one per request being served (default 8, at most 256)
+  --max-client-connections N  connections one client address may have open at once (default 128,
+                 1 to 1024); the next one is answered 503. Raise it when many users share one address (NAT)
   --web DIR      folder of the static page (default web/, relative to the working directory)
   --cors-origin O  answer cross-origin requests from origin O ("https://tools.example:8443"; repeatable;
                  "*" for any): CORS headers on every answer, preflights answered (default: off)
@@ -70,7 +72,7 @@ void log_line(std::string_view line) {
 
 int run_serve(const Args& args) {
   return guarded([&] {
-    const Flags flags = parse_flags(args, {"host", "port", "threads", "web", "presets", "cors-origin"}, {"help"});
+    const Flags flags = parse_flags(args, {"host", "port", "threads", "max-client-connections", "web", "presets", "cors-origin"}, {"help"});
     if (flags.has("help")) {
       std::cout << kServeHelp;
       return kExitOk;
@@ -79,6 +81,9 @@ int run_serve(const Args& args) {
     options.host = flags.get("host").value_or("127.0.0.1");
     options.port = integer_flag(flags, "port", 8080, 0, 65535);
     options.threads = integer_flag(flags, "threads", http::limits::kDefaultThreads, 1, http::limits::kMaxThreads);
+    options.max_client_connections = static_cast<std::size_t>(
+        integer_flag(flags, "max-client-connections", static_cast<int>(http::limits::kMaxConnectionsPerClient), 1,
+                     static_cast<int>(http::limits::kMaxOpenConnections)));
     options.log = log_line;
     http::ServiceConfig config;
     config.web_root = flags.get("web").value_or("web");

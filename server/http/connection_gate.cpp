@@ -1,5 +1,6 @@
 #include "http/connection_gate.h"
 
+#include <netinet/in.h>
 #include <sys/epoll.h>
 #include <sys/eventfd.h>
 #include <sys/resource.h>
@@ -10,6 +11,7 @@
 #include <array>
 #include <atomic>
 #include <cerrno>
+#include <cstring>
 #include <condition_variable>
 #include <deque>
 #include <mutex>
@@ -67,6 +69,7 @@ struct Held {
 struct Incoming {
   int sock;
   Held held;
+  bool refused = false;  ///< answered at admission (client_limit): never takes another connection's place
 };
 
 void close_socket(int sock) {
@@ -78,6 +81,23 @@ void close_socket(int sock) {
 
 bool head_complete(std::string_view received) { return received.find("\r\n\r\n") != std::string_view::npos; }
 
+std::string client_key(int sock) {
+  sockaddr_storage addr{};
+  socklen_t len = sizeof addr;
+  if (::getpeername(sock, reinterpret_cast<sockaddr*>(&addr), &len) != 0) return {};
+  if (addr.ss_family == AF_INET) {
+    const auto& a = reinterpret_cast<const sockaddr_in&>(addr);
+    return std::string(reinterpret_cast<const char*>(&a.sin_addr), sizeof a.sin_addr);
+  }
+  if (addr.ss_family == AF_INET6) {
+    const auto& a = reinterpret_cast<const sockaddr_in6&>(addr);
+    const char* bytes = reinterpret_cast<const char*>(&a.sin6_addr);
+    if (IN6_IS_ADDR_V4MAPPED(&a.sin6_addr)) return std::string(bytes + 12, 4);
+    return std::string(bytes, sizeof a.sin6_addr);
+  }
+  return {};
+}
+
 struct ConnectionGate::State {
   GateOptions options;
   Serve serve;
@@ -88,6 +108,13 @@ struct ConnectionGate::State {
   std::mutex inbox_mutex;
   std::vector<Incoming> inbox;  ///< sockets to take into the poll loop (new, or back from a worker)
   bool stopping = false;
+
+  // Connections open per client address (GateOptions::max_per_client), from admission to the final close,
+  // wherever they are (held, queued, served). A socket is forgotten here before its descriptor is closed,
+  // so a descriptor number reused by the next accept() is never counted twice.
+  mutable std::mutex clients_mutex;
+  std::unordered_map<int, std::string> client_of;          ///< admitted socket -> its client key
+  std::unordered_map<std::string, std::size_t> open_from;  ///< client key -> connections open
 
   std::unordered_map<int, Held> held;  ///< touched by the poll thread only
   std::atomic<std::size_t> held_count{0};
@@ -111,17 +138,50 @@ struct ConnectionGate::State {
     [[maybe_unused]] const ssize_t n = ::write(wake_fd, &one, sizeof one);
   }
 
+  // From the accept thread: counts the connection against its client address, or, past that address's
+  // limit, answers 503 at once and hands it to the poll loop only to drain.
+  void admit(int sock) {
+    std::string key = options.max_per_client > 0 ? client_key(sock) : std::string();
+    if (!key.empty()) {
+      const std::lock_guard lock(clients_mutex);
+      std::size_t& open = open_from[key];
+      if (open >= options.max_per_client) {
+        Held h;
+        answer_and_drain(sock, h, refuse(Refusal::client_limit, {}));
+        take(sock, std::move(h), true);
+        return;
+      }
+      ++open;
+      client_of.emplace(sock, std::move(key));
+    }
+    take(sock, Held{});
+  }
+
+  // The final close of a connection: forget its client address first, then close the descriptor.
+  void close_conn(int sock) {
+    {
+      const std::lock_guard lock(clients_mutex);
+      const auto it = client_of.find(sock);
+      if (it != client_of.end()) {
+        const auto count = open_from.find(it->second);
+        if (count != open_from.end() && --count->second == 0) open_from.erase(count);
+        client_of.erase(it);
+      }
+    }
+    close_socket(sock);
+  }
+
   // From any thread: hand a socket to the poll loop, or close it when the gate has stopped.
-  void take(int sock, Held h) {
+  void take(int sock, Held h, bool refused = false) {
     {
       const std::lock_guard lock(inbox_mutex);
       if (!stopping) {
-        inbox.push_back({sock, std::move(h)});
+        inbox.push_back({sock, std::move(h), refused});
         sock = -1;
       }
     }
     if (sock >= 0) {
-      close_socket(sock);
+      close_conn(sock);
       return;
     }
     wake();
@@ -144,7 +204,7 @@ struct ConnectionGate::State {
   void drop(std::unordered_map<int, Held>::iterator it) {
     const int sock = it->first;
     forget(it);
-    close_socket(sock);
+    close_conn(sock);
   }
 
   // Send an answer, half-close, and keep the socket only to discard what the client still sends.
@@ -170,6 +230,10 @@ struct ConnectionGate::State {
   }
 
   void insert(Incoming in) {
+    if (held.size() >= options.max_open && in.refused) {
+      close_conn(in.sock);
+      return;
+    }
     if (held.size() >= options.max_open && !held.empty()) drop(least_valuable());
     Held& h = in.held;
     h.since = Clock::now();
@@ -183,7 +247,7 @@ struct ConnectionGate::State {
     ev.events = EPOLLIN | EPOLLRDHUP;
     ev.data.fd = in.sock;
     if (::epoll_ctl(epoll_fd, EPOLL_CTL_ADD, in.sock, &ev) != 0) {
-      close_socket(in.sock);
+      close_conn(in.sock);
       return;
     }
     const int in_sock = in.sock;
@@ -300,7 +364,7 @@ struct ConnectionGate::State {
     }
     for (Incoming& in : taken) {
       if (stop) {
-        close_socket(in.sock);
+        close_conn(in.sock);
       } else {
         insert(std::move(in));
       }
@@ -328,7 +392,7 @@ struct ConnectionGate::State {
         next_sweep = Clock::now() + kSweepInterval;
       }
     }
-    for (auto& [sock, h] : held) close_socket(sock);
+    for (auto& [sock, h] : held) close_conn(sock);
     held.clear();
     held_count.store(0);
   }
@@ -378,7 +442,7 @@ struct ConnectionGate::State {
       after = AfterServe::close;
     }
     if (after == AfterServe::close) {
-      close_socket(c.sock);
+      close_conn(c.sock);
       return;
     }
     Held h;
@@ -415,7 +479,7 @@ ConnectionGate::ConnectionGate(GateOptions options, Serve serve, Refuse refuse) 
 
 ConnectionGate::~ConnectionGate() { shutdown(); }
 
-void ConnectionGate::admit(int sock) { state_->take(sock, Held{}); }
+void ConnectionGate::admit(int sock) { state_->admit(sock); }
 
 void ConnectionGate::shutdown() {
   State& s = *state_;
@@ -445,5 +509,11 @@ bool ConnectionGate::requests_waiting() const {
 std::size_t ConnectionGate::capacity() const { return state_->options.max_open; }
 
 std::size_t ConnectionGate::held() const { return state_->held_count.load(std::memory_order_relaxed); }
+
+std::size_t ConnectionGate::open_from(const std::string& client_key) const {
+  const std::lock_guard lock(state_->clients_mutex);
+  const auto it = state_->open_from.find(client_key);
+  return it == state_->open_from.end() ? 0 : it->second;
+}
 
 }  // namespace softtune::http

@@ -38,6 +38,11 @@ struct GateOptions {
   /// Bytes the gate buffers in all (heads and bodies arriving); past it the connection that has waited
   /// longest is closed, so slow bodies count against a total as connections do against max_open.
   std::size_t max_buffered_bytes = 64u << 20;
+  /// Connections one client address (IPv4, or IPv6 in full; an IPv4-mapped IPv6 address counts as its
+  /// IPv4 one) may have open at once: held, queued or being served. The next one from that address is
+  /// answered 503 (Refusal::client_limit) at once and closed, without taking a place of anyone else's.
+  /// 0: no limit.
+  std::size_t max_per_client = 0;
   /// Probes (is_lane_request) waiting for the reserved lane's worker; more get 503.
   std::size_t max_lane = 64;
   /// A connection without any byte of a (next) request is closed after this time.
@@ -65,7 +70,12 @@ enum class AfterServe {
 enum class Refusal {
   busy,     ///< max_ready complete heads are already waiting for a worker: 503
   timeout,  ///< the request (head and body) did not arrive in time: 408
+  client_limit,  ///< the client's address already has max_per_client connections open: 503, nothing read
 };
+
+/// The key a connection's peer address is counted under for GateOptions::max_per_client: the address's
+/// bytes (4 for IPv4 and IPv4-mapped IPv6, 16 for IPv6); empty when the socket has no IP peer.
+std::string client_key(int sock);
 
 class ConnectionGate {
  public:
@@ -79,7 +89,8 @@ class ConnectionGate {
   ConnectionGate(const ConnectionGate&) = delete;
   ConnectionGate& operator=(const ConnectionGate&) = delete;
 
-  /// Takes ownership of a newly accepted socket. When max_open connections are already held, one
+  /// Takes ownership of a newly accepted socket. When its client address already has max_per_client
+  /// connections open, answers 503 and closes it. When max_open connections are already held, one
   /// draining after a refusal, or else the one that has waited longest, is closed to make room.
   void admit(int sock);
   /// Closes every held connection, lets the workers finish the requests already handed to them, and
@@ -92,6 +103,8 @@ class ConnectionGate {
   std::size_t capacity() const;
   /// Connections held by the gate now (waiting for a head, idle or draining), not those being served.
   std::size_t held() const;
+  /// Connections open now from the address `client_key` names (held, queued or being served).
+  std::size_t open_from(const std::string& client_key) const;
 
  private:
   struct State;

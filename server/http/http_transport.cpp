@@ -186,6 +186,7 @@ class LibraryServer final : public httplib::Server {
     GateOptions g;
     g.threads = options_.threads;
     g.max_open = options_.max_open_connections;
+    g.max_per_client = options_.max_client_connections;
     g.max_ready = options_.max_queued;
     g.max_head_bytes = limits::kMaxHeaderBytes;
     g.request_read_timeout = options_.request_read_timeout;
@@ -259,8 +260,8 @@ class LibraryServer final : public httplib::Server {
     return true;
   }
 
-  // The answer the gate sends itself: 503 when too many heads wait for a worker, 408 when a head is
-  // not complete in time.
+  // The answer the gate sends itself: 503 when too many heads wait for a worker or the client's address
+  // has too many connections open, 408 when a head is not complete in time.
   std::string refusal(Refusal why, std::string_view received) {
     const Clock::time_point start = Clock::now();
     GateRefusal answer = gate_refusal(why, received, options_, service_.config().cors);

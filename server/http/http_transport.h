@@ -22,6 +22,8 @@ struct TransportOptions {
   int threads = limits::kDefaultThreads;
   std::size_t max_queued = limits::kMaxQueuedConnections;  ///< complete heads waiting for a worker
   std::size_t max_open_connections = limits::kMaxOpenConnections;
+  /// Connections one client address may have open at once (held, queued or served); 0: no limit.
+  std::size_t max_client_connections = limits::kMaxConnectionsPerClient;
   std::chrono::milliseconds request_read_timeout = limits::kRequestReadTimeout;
   std::chrono::milliseconds write_timeout = limits::kWriteTimeout;
   std::chrono::milliseconds keep_alive_timeout = limits::kKeepAliveTimeout;

@@ -30,6 +30,10 @@ inline constexpr std::size_t kMaxQueuedConnections = 64;
 /// refusal (they cost a buffer and a file descriptor, never a worker). A new connection arriving when
 /// this many are held closes one that is draining, or else the one that has waited longest.
 inline constexpr std::size_t kMaxOpenConnections = 1024;
+/// Connections one client address may have open at once, wherever they are (arriving, idle, queued, being
+/// served), so that one client cannot take every place among kMaxOpenConnections; the next one from that
+/// address is answered 503 with Retry-After: 1 at once, before any byte of it is read, and closed.
+inline constexpr std::size_t kMaxConnectionsPerClient = 128;
 
 /// Reading one whole request (line, headers and body) must finish within this time, however slowly
 /// the bytes trickle in (a per-read timeout alone lets a client send one byte every few seconds forever);

@@ -67,6 +67,7 @@ std::vector<NumericLimit> numeric_limits() {
       {"max_threads", D(hl::kMaxThreads)},
       {"max_queued_connections", D(hl::kMaxQueuedConnections)},
       {"max_open_connections", D(hl::kMaxOpenConnections)},
+      {"max_connections_per_client", D(hl::kMaxConnectionsPerClient)},
       {"request_read_timeout_ms", D(hl::kRequestReadTimeout.count())},
       {"min_body_bytes_per_s", D(hl::kMinBodyBytesPerSecond)},
       {"body_grace_ms", D(hl::kBodyGrace.count())},
@@ -160,6 +161,13 @@ std::vector<LimitRow> transport_rows() {
            "server raises its soft file-descriptor limit to fit them, and holds fewer if the hard limit is lower",
        "`server/http/limits.h` `kMaxOpenConnections`",
        "one that is draining is closed, or else the one that has waited longest, to admit the new one"},
+      {"connections per client address",
+       figure(hl::kMaxConnectionsPerClient) +
+           " open at once from one IP address (IPv4, or IPv6 in full; an IPv4-mapped address as its IPv4 one), "
+           "wherever they are: arriving, idle, queued or being served",
+       "`server/http/limits.h` `kMaxConnectionsPerClient`",
+       "the next one from that address is answered 503 with `Retry-After: 1` before any byte of it is read, "
+       "and closed; it takes no other connection's place"},
   };
 }
 

@@ -10,6 +10,9 @@
 #include "app/preview_service.h"
 #include "codec/problem.h"
 #include "http/conditional.h"
+#include "http/limits.h"
+#include "app/budgets.h"
+#include "softtune/support/sanitizer_build.h"
 
 namespace softtune::http {
 namespace {
@@ -22,7 +25,12 @@ class LazyPreviews {
   /// The service, made on the first call (its caches then show in `metrics`).
   app::PreviewService& get(Metrics* metrics = nullptr) {
     std::call_once(once_, [this, metrics] {
-      service_ = std::make_unique<app::PreviewService>();
+      // A preview's frames render on the pool, not on the request's thread: they are held to the same
+      // limit as a request's run (kRunLimitFactor x its budget), summed over their frames.
+      render::PipelineOptions options;
+      options.job_cpu_seconds =
+          limits::kRunLimitFactor * app::budgets::kCpuSeconds * support::kInstrumentationSlowdown;
+      service_ = std::make_unique<app::PreviewService>(options);
       if (metrics) {
         metrics->add_cache_gauge("preview_frames", [this] {
           const support::LruStats s = service_->cache_stats();

@@ -117,6 +117,11 @@ GateRefusal gate_refusal(Refusal why, std::string_view received, const Transport
           ? codec::Problem(503, "Service unavailable", "",
                            "the server is busy: " + std::to_string(options.max_queued) +
                                " requests are already waiting for a worker; retry shortly")
+      : why == Refusal::client_limit
+          ? codec::Problem(503, "Service unavailable", "",
+                           "too many connections from your address: at most " +
+                               std::to_string(options.max_client_connections) +
+                               " open at once; close one (or reuse it with keep-alive) and retry")
           : codec::Problem(408, "Request timeout", "",
                            "the request (line, headers and body) must arrive within " +
                                std::to_string(options.request_read_timeout.count()) + " ms, the body within " +
@@ -136,8 +141,8 @@ GateRefusal gate_refusal(Refusal why, std::string_view received, const Transport
     for (const auto& [name, value] : headers.headers) cors_lines += name + ": " + value + "\r\n";
   }
   out.response = "HTTP/1.1 " + std::to_string(p.status) +
-                 (why == Refusal::busy ? " Service Unavailable" : " Request Timeout") +
-                 "\r\nContent-Type: application/problem+json\r\n" + (why == Refusal::busy ? "Retry-After: 1\r\n" : "") + cors_lines +
+                 (p.status == 503 ? " Service Unavailable" : " Request Timeout") +
+                 "\r\nContent-Type: application/problem+json\r\n" + (p.status == 503 ? "Retry-After: 1\r\n" : "") + cors_lines +
                  "Connection: close\r\nContent-Length: " + std::to_string(body.size()) + "\r\n\r\n" + body;
   return out;
 }

@@ -7,7 +7,8 @@
 //    head past limits::kMaxHeaderBytes or a line past limits::kMaxHeaderLineBytes;
 //  - 500 from the library's exception handler (Service::handle never lets one out: a last guard);
 //  - the ConnectionGate's own answers, written here as whole HTTP responses since no library request
-//    exists yet: 503 when too many heads wait for a worker, 408 when a head does not arrive in time.
+//    exists yet: 503 when too many heads wait for a worker or the client's address has too many connections
+//    open, 408 when a head does not arrive in time.
 //
 // cpp-httplib 0.11.4 used here (the version server/CMakeLists.txt pins): httplib::Request's method, path
 // and headers; that its error handler sees the status it set with an empty body; and that it refuses a

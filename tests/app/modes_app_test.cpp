@@ -10,6 +10,7 @@
 #include "app/simulate_app.h"
 #include "codec/problem.h"
 #include "../presets_dir.h"
+#include "softtune/support/run_limit.h"
 
 namespace softtune::app {
 namespace {
@@ -103,4 +104,48 @@ TEST(ModesApp, RefusesModalTargetsItCannotReachNamingThem) {
 }
 
 }  // namespace
+}  // namespace softtune::app
+
+namespace softtune::app {
+namespace {
+
+// `bodies` free boxes on one spot, linearised at t = 0 (before any step, so no contacts: every body
+// free, the eigenproblems at their largest for that count, 6 x bodies square).
+json modes_limit_crowd(int bodies) {
+  json list = json::array();
+  for (int i = 0; i < bodies; ++i) {
+    list.push_back({{"id", "b" + std::to_string(i)},
+                    {"shape", {{"type", "box"}, {"width", 1}, {"height", 1}}},
+                    {"mass", 1},
+                    {"position", {0.001 * (i % 10), 0.001 * (i / 10)}}});
+  }
+  return {{"name", "crowd"},
+          {"world", {{"fps", 60}, {"duration_s", 1.0}, {"gravity", {0, -10}}, {"bounds", {-1000, -1000, 1000, 1000}}}},
+          {"bodies", list},
+          {"at_s", 0}};
+}
+
+}  // namespace
+
+// The modes' solve checks the run-time limit between its stages (the null-space reduction's rows and each
+// eigenproblem): with no Box2D step to check (at_s 0), a request under a limit of a fifth of its own run
+// stops before its last eigenproblem, instead of running to the end.
+TEST(ModesApp, TheSolveStopsAtTheRunLimit) {
+  const json request = modes_limit_crowd(50);
+  const double t0 = support::thread_cpu_seconds();
+  EXPECT_EQ(run_modes(request, kPresets)["bodies"], 50);
+  const double whole = support::thread_cpu_seconds() - t0;
+  bool stopped = false;
+  const double t1 = support::thread_cpu_seconds();
+  try {
+    const support::ScopedRunLimit limit({whole / 5, nullptr, {}});
+    run_modes(request, kPresets);
+  } catch (const support::RunStopped& e) {
+    stopped = e.why == support::RunStopped::Why::budget;
+  }
+  const double spent = support::thread_cpu_seconds() - t1;
+  EXPECT_TRUE(stopped) << "the whole solve took " << whole << " s of CPU";
+  EXPECT_LT(spent, 0.8 * whole) << "stopped after " << spent << " s, the whole solve " << whole << " s";
+}
+
 }  // namespace softtune::app

@@ -19,14 +19,15 @@ TEST(SceneCost, EveryPresetFits) {
   }
 }
 
-// 500 boxes for 40 s at 1000 fps (2e7 body-steps, inside the scene limits) is tens of seconds of Box2D.
+// 500 boxes for 40 s at 1000 fps (2e7 body-steps, inside the scene limits) is 7-13 s of Box2D when they
+// stay apart (0.35-0.65 us a body-step, bench/scene_price_bench.cpp), far more in contact.
 TEST(SceneCost, ALongCrowdedSceneIsOverAndNamesItsFieldsUnderThePrefix) {
   softtune::scene::Scene s;
   s.world.fps = 1000;
   s.world.duration_s = 40;
   s.bodies.resize(500);
   const auto cost = softtune::app::scene_cost(s, {}, "scene.");
-  EXPECT_GT(cost.cpu_seconds, 10 * softtune::app::budgets::kCpuSeconds);
+  EXPECT_GT(cost.cpu_seconds, 3 * softtune::app::budgets::kCpuSeconds);
   ASSERT_GE(cost.fields.size(), 3u);
   EXPECT_EQ(cost.fields.front(), "scene.bodies");
   for (const std::string& f : cost.fields) EXPECT_EQ(f.rfind("scene.", 0), 0u) << f;

@@ -3,9 +3,15 @@
 #include "http/connection_gate.h"
 
 #include <gtest/gtest.h>
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <cstdlib>
+#include <cstring>
+#include <string>
 
 using softtune::http::AfterServe;
 using softtune::http::ConnectionGate;
@@ -53,4 +59,75 @@ TEST(ConnectionGate, HoldsWhatTheDescriptorLimitAllows) {
   // A low hard limit: fewer connections, leaving the reserve (128 + 2 workers + the probe lane's worker + 64
   // queued + 64 probes queued) free.
   EXPECT_EXIT(expect_capacity_under_limit(512, 512, 1024, 512 - 128 - 2 - 1 - 64 - 64), ::testing::ExitedWithCode(0), "");
+}
+
+namespace {
+
+// An address of either family on `port` (0: any).
+sockaddr_storage gate_test_address(const char* ip, in_port_t port, socklen_t& len) {
+  sockaddr_storage addr{};
+  if (std::string(ip).find(':') == std::string::npos) {
+    auto& a = reinterpret_cast<sockaddr_in&>(addr);
+    a.sin_family = AF_INET;
+    a.sin_port = port;
+    ::inet_pton(AF_INET, ip, &a.sin_addr);
+    len = sizeof a;
+  } else {
+    auto& a = reinterpret_cast<sockaddr_in6&>(addr);
+    a.sin6_family = AF_INET6;
+    a.sin6_port = port;
+    ::inet_pton(AF_INET6, ip, &a.sin6_addr);
+    len = sizeof a;
+  }
+  return addr;
+}
+
+// Listens on `listen_on`, connects from a socket of `connect_to`'s family, and returns client_key of the
+// accepted socket; "unbound" when this machine has no such address (no IPv6).
+std::string gate_key_of_client(const char* listen_on, const char* connect_to) {
+  socklen_t len = 0;
+  sockaddr_storage addr = gate_test_address(listen_on, 0, len);
+  const int listener = ::socket(addr.ss_family, SOCK_STREAM, 0);
+  if (::bind(listener, reinterpret_cast<sockaddr*>(&addr), len) != 0 || ::listen(listener, 1) != 0 ||
+      ::getsockname(listener, reinterpret_cast<sockaddr*>(&addr), &len) != 0) {
+    ::close(listener);
+    return "unbound";
+  }
+  // The port sits at the same offset in sockaddr_in and sockaddr_in6.
+  const in_port_t port = reinterpret_cast<sockaddr_in&>(addr).sin_port;
+  socklen_t to_len = 0;
+  sockaddr_storage to = gate_test_address(connect_to, port, to_len);
+  const int client = ::socket(to.ss_family, SOCK_STREAM, 0);
+  std::string key = "unconnected";
+  if (::connect(client, reinterpret_cast<sockaddr*>(&to), to_len) == 0) {
+    const int served = ::accept(listener, nullptr, nullptr);
+    key = softtune::http::client_key(served);
+    ::close(served);
+  }
+  ::close(client);
+  ::close(listener);
+  return key;
+}
+
+}  // namespace
+
+TEST(ConnectionGate, ClientKeyIsThePeersAddress) {
+  EXPECT_EQ(gate_key_of_client("127.0.0.1", "127.0.0.1"), std::string("\x7f\x00\x00\x01", 4));
+  const std::string v6 = gate_key_of_client("::1", "::1");
+  if (v6 != "unbound") {
+    std::string loopback(16, '\0');
+    loopback[15] = 1;
+    EXPECT_EQ(v6, loopback);
+  }
+  // An IPv4 client of a dual-stack listener counts as its IPv4 address, not as a second, IPv6, client.
+  const std::string mapped = gate_key_of_client("::", "127.0.0.1");
+  if (mapped != "unbound") {
+    EXPECT_EQ(mapped, std::string("\x7f\x00\x00\x01", 4));
+  }
+  // A socket without an IP peer has no key (it is never limited).
+  int pair[2];
+  ASSERT_EQ(::socketpair(AF_UNIX, SOCK_STREAM, 0, pair), 0);
+  EXPECT_EQ(softtune::http::client_key(pair[0]), "");
+  ::close(pair[0]);
+  ::close(pair[1]);
 }

@@ -112,6 +112,7 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["max_threads"], l::kMaxThreads);
   EXPECT_EQ(x["max_queued_connections"], l::kMaxQueuedConnections);
   EXPECT_EQ(x["max_open_connections"], l::kMaxOpenConnections);
+  EXPECT_EQ(x["max_connections_per_client"], l::kMaxConnectionsPerClient);
   EXPECT_EQ(x["request_read_timeout_ms"], l::kRequestReadTimeout.count());
   EXPECT_EQ(x["min_body_bytes_per_s"], l::kMinBodyBytesPerSecond);
   EXPECT_EQ(x["body_grace_ms"], l::kBodyGrace.count());
@@ -159,7 +160,7 @@ TEST(OpenApi, LimitsAreThoseOfTheServer) {
   EXPECT_EQ(x["max_kept_jobs"], softtune::app::kMaxKeptJobs);
   EXPECT_EQ(x["job_kept_s"], softtune::app::kKeepJobsFor.count());
   EXPECT_EQ(x["max_kept_job_bytes"], softtune::app::kMaxKeptJobBytes);
-  EXPECT_EQ(x.size(), 54u) << "a limit is documented that this test does not check";
+  EXPECT_EQ(x.size(), 55u) << "a limit is documented that this test does not check";
   // A list's length in a schema is the codec's.
   EXPECT_EQ(openapi_document()["components"]["schemas"]["AccuracyRequest"]["properties"]["soft_substeps"]["maxItems"],
             softtune::limits::kMaxSoftSubsteps);

@@ -85,8 +85,16 @@ class TestServer {
 /// A plain TCP connection to the test server.
 class RawConnection {
  public:
-  explicit RawConnection(int port) {
+  /// `source`: the local IPv4 address to connect from ("127.0.0.2": any of 127.0.0.0/8 is this machine),
+  /// so that one test can be several clients; the default lets the kernel choose (127.0.0.1).
+  explicit RawConnection(int port, const char* source = nullptr) {
     fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    if (source != nullptr) {
+      sockaddr_in local{};
+      local.sin_family = AF_INET;
+      ::inet_pton(AF_INET, source, &local.sin_addr);
+      if (::bind(fd_, reinterpret_cast<sockaddr*>(&local), sizeof local) != 0) return;
+    }
     sockaddr_in addr{};
     addr.sin_family = AF_INET;
     addr.sin_port = htons(static_cast<uint16_t>(port));

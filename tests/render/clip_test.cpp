@@ -8,9 +8,11 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 
 #include "softtune/render/palette.h"
 #include "softtune/render/png.h"
+#include "softtune/support/run_limit.h"
 
 namespace softtune::render {
 namespace {
@@ -270,4 +272,48 @@ TEST(Clip, CapsAndBadInput) {
 }
 
 }  // namespace
+}  // namespace softtune::render
+
+namespace softtune::render {
+namespace {
+
+double clip_test_cpu_of(const std::function<void()>& work) {
+  const double t0 = support::thread_cpu_seconds();
+  work();
+  return support::thread_cpu_seconds() - t0;
+}
+
+}  // namespace
+
+// A clip encodes under its caller's run-time limit (support/run_limit.h), checked once per frame: a WebP
+// that takes far longer than the limit stops within about one frame of it with RunStopped (the HTTP
+// service's 422), and encodes whole without one.
+TEST(Clip, EncodingStopsAtTheRunLimit) {
+  const ImageSize size{640, 360};
+  const std::vector<std::string> frames = moving_square(40, size);
+  const std::vector<double> times = [] {
+    std::vector<double> t(40);
+    for (int i = 0; i < 40; ++i) t[i] = i / 60.0;
+    return t;
+  }();
+  double whole = 0.0, one_frame = 0.0;
+  whole = clip_test_cpu_of([&] { EXPECT_FALSE(encode_clip(ClipFormat::webp, frames, times).empty()); });
+  one_frame = whole / 40;
+  const double limit = whole / 8;  // the whole clip takes 8 times the limit
+  bool stopped = false;
+  const double spent = clip_test_cpu_of([&] {
+    const support::ScopedRunLimit scoped({limit, nullptr, {}});
+    try {
+      encode_clip(ClipFormat::webp, frames, times);
+    } catch (const support::RunStopped& e) {
+      stopped = e.why == support::RunStopped::Why::budget;
+      EXPECT_GT(e.cpu_seconds, limit);
+    }
+  });
+  EXPECT_TRUE(stopped) << "the whole clip took " << whole << " s of CPU, the limit was " << limit << " s";
+  // Stopped within the limit plus a few frames (the clocks are read every 10 ms) and the encoder's teardown.
+  EXPECT_LT(spent, limit + 4 * one_frame + 0.02) << "whole clip " << whole << " s, limit " << limit << " s";
+  EXPECT_LT(spent, whole / 2);
+}
+
 }  // namespace softtune::render

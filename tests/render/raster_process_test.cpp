@@ -4,6 +4,7 @@
 
 #include <dirent.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -142,6 +143,38 @@ TEST(ProcessRenderer, AfterACrashOneFrameFailsAndTheNextIsDrawn) {
   std::fill(rgba.begin(), rgba.end(), 0);
   EXPECT_NO_THROW(r->render(DrawFrame{}, Camera{}, {640, 360}, rgba));
   EXPECT_EQ(rgba[3], 255);  // drawn: opaque background
+}
+
+double raster_test_children_cpu() {
+  rusage u{};
+  ::getrusage(RUSAGE_CHILDREN, &u);
+  return u.ru_utime.tv_sec + 1e-6 * u.ru_utime.tv_usec + u.ru_stime.tv_sec + 1e-6 * u.ru_stime.tv_usec;
+}
+
+// The raster process's CPU time as read from /proc (what the frame pipeline charges a preview) agrees with
+// what the kernel reports for it once it is reaped (getrusage RUSAGE_CHILDREN), within its 10 ms ticks and
+// its exit; the renderer sums it over frames.
+TEST(RasterProcess, CpuTimeIsTheProcesssOwn) {
+  const double before = raster_test_children_cpu();
+  double last = 0.0;
+  {
+    RasterProcess p({});
+    std::vector<std::uint8_t> rgba(1280 * 720 * 4);
+    for (int i = 0; i < 30; ++i) ASSERT_NO_THROW(p.rasterize(left_half(), {1280, 720}, rgba));
+    last = p.cpu_seconds();
+    EXPECT_EQ(p.close_and_wait(), 0);
+    EXPECT_EQ(p.cpu_seconds(), 0.0);  // no process
+  }
+  const double reaped = raster_test_children_cpu() - before;
+  EXPECT_GT(last, 0.0);
+  EXPECT_LE(last, reaped + 0.02);
+  EXPECT_GE(last, reaped - 0.05) << "reaped " << reaped << " s, read " << last << " s";
+
+  auto r = make_osmesa_renderer();
+  std::vector<std::uint8_t> frame(1280 * 720 * 4);
+  EXPECT_EQ(r->raster_cpu_seconds(), 0.0);
+  for (int i = 0; i < 10; ++i) r->render(DrawFrame{}, Camera{}, {1280, 720}, frame);
+  EXPECT_GT(r->raster_cpu_seconds(), 0.0);
 }
 
 }  // namespace

@@ -374,3 +374,54 @@ test('planck.js (JavaScript): the snippet runs under node in the real planck wit
     parameters: { 'MouseJointDef.dampingRatio': 0.1, 'MouseJointDef.frequencyHz': 10, 'MouseJointDef.maxForce': 1e15 } }, 'plain');
   assert.match(mouse, /new planck\.MouseJoint\(\{ frequencyHz: 10, dampingRatio: 0\.1, maxForce: 1000000000000000 \}, ground, body, target\)/);
 });
+
+test('cannon-es (JavaScript): the Spring and the DistanceConstraint snippets run under node in the real cannon-es', async () => {
+  const CANNON = await import('cannon-es');
+  const report = {
+    settings: { iterations: 10, joint: 'spring', linearDamping: 0.01, spookTimeStep: 0 },
+    parameters: { 'Spring.damping': 2.5132741228718345, 'Spring.stiffness': 157.91367041742973 },
+    predicted: ok(2.025314432017956, 0.10129010666490974),
+    exact: { 'Spring.damping': 2.4513140696813185, 'Spring.stiffness': 154.08755979183198 },
+    exact_predicted: ok(2.0000000000000004, 0.10000000000000048),
+  };
+  const text = snippet('cannon_es', report, 'exact');
+  assert.equal(text, [
+    '// cannon-es (JavaScript), exact values: predicted 2 Hz, damping ratio 0.1',
+    'body.linearDamping = 0.01;',
+    'body.angularDamping = 0.01;',
+    'world.solver.iterations = 10;',
+    'const spring = new CANNON.Spring(ground, body, { restLength, localAnchorA, localAnchorB, stiffness: 154.08755979183198, damping: 2.4513140696813185 });',
+    "world.addEventListener('postStep', () => spring.applyForce());  // the force for the next step",
+    'world.step(0.016666666666666666);  // a fixed step of h',
+  ].join('\n'));
+  // Run as written on a 1 kg body 0.05 past a rest length of 1: the Spring holds the numbers and pulls it back.
+  const scene = () => {
+    const world = new CANNON.World({ gravity: new CANNON.Vec3(0, 0, 0) });
+    const ground = new CANNON.Body({ mass: 0 });
+    const body = new CANNON.Body({ mass: 1, shape: new CANNON.Sphere(0.1), position: new CANNON.Vec3(1.05, 0, 0) });
+    world.addBody(ground);
+    world.addBody(body);
+    return { world, ground, body };
+  };
+  const { world, ground, body } = scene();
+  const run = new Function('CANNON', 'world', 'ground', 'body', 'restLength', 'localAnchorA', 'localAnchorB',
+                           `${text}\nreturn spring;`);
+  const spring = run(CANNON, world, ground, body, 1, new CANNON.Vec3(), new CANNON.Vec3());
+  assert.equal(spring.stiffness, report.exact['Spring.stiffness']);
+  assert.equal(spring.damping, report.exact['Spring.damping']);
+  assert.equal(body.linearDamping, 0.01);
+  world.step(1 / 60);
+  assert.ok(body.velocity.x < 0 && body.position.x < 1.05);
+  // The DistanceConstraint bakes its SPOOK numbers with the report's spookTimeStep.
+  const spook = { ...report, settings: { ...report.settings, joint: 'distance', spookTimeStep: 1 / 60 },
+    exact: { 'setSpookParams.relaxation': 0.9545147212375769, 'setSpookParams.stiffness': 162.49218380854475 } };
+  const spookText = snippet('cannon_es', spook, 'exact');
+  assert.match(spookText, /^constraint\.distanceEquation\.setSpookParams\(162\.49218380854475, 0\.9545147212375769, 0\.016666666666666666\);/m);
+  const s = scene();
+  const build = new Function('CANNON', 'world', 'ground', 'body', 'distance', `${spookText}\nreturn constraint;`);
+  const constraint = build(CANNON, s.world, s.ground, s.body, 1);
+  const eq = constraint.distanceEquation, d = 0.9545147212375769, h = 1 / 60;
+  assert.equal(s.world.constraints[0], constraint);
+  assert.ok(Math.abs(eq.a - 4 / (h * (1 + 4 * d))) < 1e-9 && Math.abs(eq.b - 4 * d / (1 + 4 * d)) < 1e-12);
+  assert.ok(s.body.position.x < 1.05);
+});

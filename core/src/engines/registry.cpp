@@ -14,6 +14,7 @@
 #include "softtune/engines/godot_2d.h"
 #include "softtune/engines/matter_js.h"
 #include "softtune/engines/planck_js.h"
+#include "softtune/engines/cannon_es.h"
 
 namespace softtune::engines {
 
@@ -22,7 +23,7 @@ std::span<const EngineModel* const> engine_models() {
       &kBox2DV24Model, &kBox2DV3Model, &kJoltModel, &kMujocoModel,
       &kOdeModel,      &kBulletModel,  &kPhysxModel, &kRapierModel,
       &kChipmunkModel, &kGodot2DModel,
-      &kMatterJsModel, &kPlanckJsModel,
+      &kMatterJsModel, &kPlanckJsModel, &kCannonEsModel,
   };
   return kModels;
 }

@@ -221,3 +221,50 @@ TEST(MatterJsModel, RefusedPlainExportsPredictWhatTheEngineRuns) {
 
 }  // namespace
 }  // namespace softtune::engines
+
+namespace softtune::engines {
+namespace {
+
+TEST(MatterJsModel, PredictedIsTheRecurrencesDominantPairReadByEigenSolver) {
+  // The point's prediction takes the cubic's roots in closed form: the same poles as Eigen's EigenSolver on the
+  // recurrence written from the engine's lines, from soft to stiff fractions, undamped to heavily damped.
+  const double h = 1.0 / 60.0, m = 2.0;
+  int compared = 0;
+  for (double stiffness : {1e-5, 1e-3, 0.02, 0.1, 0.3}) {
+    for (double damping : {0.0, 0.01, 0.1, 0.4}) {
+      for (int n : {1, 2, 5}) {
+        for (double air : {0.0, 0.01}) {
+          const Target t = target(1.0, 0.1, m, h, {stiffness * m / (h * h), damping * m / h});
+          const EngineReport r = kMatterJsModel.report(t, matter_settings(n, air));
+          // The oscillation the model shows: the complex pair of largest modulus (unless a real pole grows).
+          Eigen::Matrix3d a;
+          for (int j = 0; j < 3; ++j) {
+            const Point y = engine_update({j == 0 ? 1.0 : 0.0, j == 1 ? 1.0 : 0.0, j == 2 ? 1.0 : 0.0}, stiffness,
+                                          damping, 1.0 - air, n);
+            a.col(j) << y.x, y.p, y.i;
+          }
+          const Eigen::Vector3cd poles = Eigen::EigenSolver<Eigen::Matrix3d>(a).eigenvalues();
+          std::complex<double> pair = 0.0;
+          double largest_real = 0.0;
+          for (int i = 0; i < 3; ++i) {
+            if (std::abs(poles(i).imag()) > 1e-9 * std::abs(poles(i))) {
+              if (std::abs(poles(i)) > std::abs(pair)) pair = poles(i);
+            } else {
+              largest_real = std::max(largest_real, std::abs(poles(i)));
+            }
+          }
+          if (pair == 0.0 || largest_real > 1.01 || !r.predicted.frequency_hz) continue;
+          const std::complex<double> sp = std::log(pair) / h;
+          const double w = std::abs(sp), z = -sp.real() / std::abs(sp);
+          ++compared;
+          EXPECT_NEAR(2.0 * kPi * *r.predicted.frequency_hz / w, 1.0, 1e-9) << stiffness << " " << damping << " " << n;
+          EXPECT_NEAR(*r.predicted.damping_ratio, z, 1e-9) << stiffness << " " << damping << " " << n;
+        }
+      }
+    }
+  }
+  EXPECT_GE(compared, 60);
+}
+
+}  // namespace
+}  // namespace softtune::engines

@@ -36,7 +36,7 @@ TEST(EngineRegistry, TheEightEnginesOnceEachUnderSnakeCaseNames) {
     EXPECT_NE(m->report, nullptr) << name;
   }
   for (const char* engine : {"box2d_v2_4", "box2d_v3", "jolt", "mujoco", "ode", "bullet", "physx", "rapier", "matter_js",
-                             "planck_js"}) {
+                             "planck_js", "cannon_es"}) {
     EXPECT_TRUE(names.contains(engine)) << engine;
   }
 }

@@ -109,7 +109,8 @@ class PreviewJob {
   const std::string& id() const;
   bool from_cache() const;
   PreviewProgress progress() const;
-  /// Blocks until every frame is done; throws std::runtime_error when rendering failed.
+  /// Blocks until every frame is done; throws std::runtime_error when rendering failed, and
+  /// support::RunStopped (a std::runtime_error) when its frames passed PipelineOptions::job_cpu_seconds.
   std::shared_ptr<const Preview> wait() const;
   /// Waits at most `timeout_ms`; true when finished.
   bool wait_for(int timeout_ms) const;
@@ -132,6 +133,10 @@ struct PipelineOptions {
   /// Makes a worker's renderer on its first frame; empty: the OSMesa backend with `renderer`.
   std::function<std::unique_ptr<Renderer>()> make_renderer;
   WebpClipOptions webp;  ///< the clip stage's WebP settings
+  /// CPU time one preview's frames may take, s, summed over its frames: each worker thread's own time
+  /// (tessellation, PNG, the clip stage) and its raster process's (Renderer::raster_cpu_seconds). Past
+  /// it the job fails at its next frame and wait() throws support::RunStopped (Why::budget); 0: no limit.
+  double job_cpu_seconds = 0.0;
 };
 
 /// Frames a clip stage holds as pixels while they wait for the encoder; past that a waiting frame is
@@ -175,6 +180,7 @@ class FramePipeline {
   void run_task(const Task& task, std::unique_ptr<Renderer>& renderer, std::vector<std::uint8_t>& pixels);
   void finish(JobState& job);
   void feed_clip(JobState& job, bool wait);
+  static void charge_frame(JobState& job, double cpu_seconds);
 
   PipelineOptions options_;
   support::LruCache<std::string, Preview> cache_;  ///< by id, weighed by Preview::bytes()

@@ -32,6 +32,9 @@ class Renderer {
   /// Draws `frame` through `camera` (fitted to this frame's bounds when auto_fit) into `rgba`, which
   /// holds size.width * size.height * 4 bytes: straight RGBA, row 0 at the top, alpha 255.
   virtual void render(const DrawFrame& frame, const Camera& camera, ImageSize size, std::span<std::uint8_t> rgba) = 0;
+  /// CPU time spent drawing outside the calling thread so far (a raster process's, summed over every
+  /// process this renderer has had), s: with the caller's own thread CPU time, what its frames cost.
+  virtual double raster_cpu_seconds() const { return 0.0; }
 };
 
 /// The OSMesa (llvmpipe) backend. Draws in a raster process of its own (softtune-raster, from the

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "softtune/diagnostics.h"
+#include "softtune/scene/engine_tuning_result.h"
 #include "softtune/response_fit.h"
 #include "softtune/scene/joint_tuning.h"
 #include "softtune/scene/modal_tuning.h"
@@ -82,6 +83,9 @@ struct SceneResult {
   std::vector<std::string> left_world;  ///< ids of bodies that left world.bounds
   std::vector<Snapshot> snapshots;
   std::optional<ModalTuningResult> modal_tuning;  ///< when the scene tunes its modes (the joints then carry the solve)
+  /// When the scene was tuned in its engine (engine_tuning.h): the springs solved by the engine's own runs, each
+  /// target's measured response in the confirming run, and the runs it took.
+  std::optional<EngineTuningResult> engine_tuning;
 };
 
 /// Runs a scene that passed validate_scene().
