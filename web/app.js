@@ -27,6 +27,7 @@ import { probeUnit, showJoints, showModalTargets, showProbes, tunedJoints } from
 import { identifyOverlay, installIdentify, showIdentified } from './identify.js';
 import { modesOfAnswer, showModes, solvedAnswer } from './modes.js';
 import { installTyped } from './typed.js';
+import { installSceneEngines, showSceneEngineValues, withSceneEngine } from './scene_engine.js';
 import {
   fromQuery, presetRequest, previewRequest, readForm, stateFromScene, toQuery, tuneRequest, tuningFields,
   writeForm,
@@ -496,9 +497,10 @@ async function runSimulate(state, tune) {
   }
   const generation = generations.current;
   try {
-    const doc = await tracked(channels.simulate.run((signal) => callJson('POST', 'api/v1/simulate', simulateRequest(state, tune), signal)));
+    const doc = await tracked(channels.simulate.run((signal) => callJson('POST', 'api/v1/simulate', withSceneEngine(simulateRequest(state, tune), state), signal)));
     if (doc === Latest.stale || !generations.belongs(generation)) return;
     if (box2dPreset(state)) showPresetJoints(state, doc);
+    showSceneEngineValues($('engine-values'), doc, state.joint);
     typedPanel.show(box2dPreset(state) ? presetScene : null, doc);
     const modal = showModalTargets($('modal-targets'), $('modal-note'), doc.modal_tuning);
     $('modal-group').hidden = !modal;
@@ -574,7 +576,7 @@ async function runPreview(state, tune) {
     note.textContent = unavailable('The rendered preview');
     return;
   }
-  const request = previewRequest(state, tune, presetScene);
+  const request = withSceneEngine(previewRequest(state, tune, presetScene), state);
   const text = JSON.stringify(request);
   // Asked already for this input (a preset's preview starts with the change, then the tune answer asks).
   const generation = generations.current;
@@ -677,7 +679,7 @@ function showSolvedJoint(answer) {
 function refreshModes(state, doc) {
   const listing = modesOfAnswer(doc);
   if (listing) showModes($('modes-panel'), listing, $('target').value);
-  else if (box2dPreset(state)) loadModes(state.preset, simulateRequest(state, null));
+  else if (box2dPreset(state)) loadModes(state.preset, withSceneEngine(simulateRequest(state, null), state));
 }
 
 /// The preset's modes (modes.js): radios of the `target` control; picking one makes the sliders tune it.
@@ -753,6 +755,11 @@ busy(0);
 await loadRoutes();
 words = oscillationWords();
 writeForm(form, fromQuery(location.search, DEFAULTS, words));
+try {
+  await installSceneEngines($('engine'), $('engine-group'));  // keeps a link's engine (writeForm left it pending)
+} catch {
+  $('engine-group').hidden = true;  // no list: the server's default engine runs every scene
+}
 syncControls();
 installIdentify(form, { request: () => tuneRequest(readForm(form)), engines: () => Object.keys(window.softtune?.tune?.engines ?? {}),
   redraw: () => scheduleTune() });

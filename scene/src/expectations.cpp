@@ -32,14 +32,20 @@ std::optional<double> metric_value(const Expectation& e, const SceneResult& run)
   }
 }
 
-CheckResult check_scene(const Scene& scene) {
+CheckResult check_scene(const Scene& scene, const RunOptions& engine) {
   CheckResult out;
   std::vector<MassModel> models = {scene.mass_model};
   for (const Expectation& e : scene.expectations) {
     if (!applies_at(e, scene.world)) continue;
     if (e.mass_model && std::find(models.begin(), models.end(), *e.mass_model) == models.end()) models.push_back(*e.mass_model);
   }
-  for (MassModel m : models) out.runs.push_back(run_scene(scene, RunOptions{m}));
+  for (MassModel m : models) {
+    RunOptions options;
+    options.mass_model = m;
+    options.backend = engine.backend;
+    options.engine_settings = engine.engine_settings;
+    out.runs.push_back(run_scene(scene, options));
+  }
   for (const SceneResult& run : out.runs) out.passed = out.passed && !run.error;
   for (const Expectation& e : scene.expectations) {
     if (!applies_at(e, scene.world)) continue;  // a bound stated for other rates

@@ -52,7 +52,10 @@ CaseResult run_case(const Prepared& p, const Job& job, const CheckOptions& optio
     if (p.problem) {
       c.problem = p.problem;
     } else {
-      const scene::CheckResult check = scene::check_scene(at_rate(*p.scene, c.rate));
+      scene::RunOptions engine;
+      engine.backend = options.engine.backend;
+      engine.engine_settings = options.engine.settings;
+      const scene::CheckResult check = scene::check_scene(at_rate(*p.scene, c.rate), engine);
       for (const scene::SceneResult& run : check.runs) {
         if (run.error) throw_field_error(*run.error);
       }
@@ -168,6 +171,7 @@ CheckReport run_checks(const std::vector<CheckInput>& all_inputs, const CheckOpt
   CheckReport report;
   report.presets_total = all_inputs.size();
   report.shard = options.shard;
+  if (options.engine.backend) report.engine = scene_engine_json(options.engine);
   const std::vector<CheckInput> inputs = shard_inputs(all_inputs, options.shard);
 
   std::vector<Prepared> prepared(inputs.size());
@@ -293,10 +297,12 @@ json check_report_json(const CheckReport& report) {
     if (c.problem) entry["problem"] = *c.problem;
     cases.push_back(std::move(entry));
   }
-  return {{"passed", report.passed},
-          {"presets_total", report.presets_total},
-          {"shard", {{"index", report.shard.index}, {"count", report.shard.count}}},
-          {"cases", std::move(cases)}};
+  json out = {{"passed", report.passed},
+              {"presets_total", report.presets_total},
+              {"shard", {{"index", report.shard.index}, {"count", report.shard.count}}},
+              {"cases", std::move(cases)}};
+  if (!report.engine.is_null()) out["engine"] = report.engine;
+  return out;
 }
 
 Baseline updated_baseline(const CheckReport& report, Baseline previous) {

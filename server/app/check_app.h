@@ -11,6 +11,7 @@
 
 #include "app/check_baseline.h"
 #include "app/job_progress.h"
+#include "codec/scene_engine_codec.h"
 #include "softtune/scene/expectations.h"
 #include "softtune/scene/scene.h"
 
@@ -48,6 +49,8 @@ struct CheckOptions {
   /// A job's progress: one unit per case; when it is cancelled, cases not yet started are left out
   /// (nullptr: the synchronous path).
   JobProgress* progress = nullptr;
+  /// The engine every case runs in (its backend and settings); a null backend: Box2D 2.4 with its defaults.
+  codec::SceneEngineChoice engine;
 };
 
 /// One preset at one rate.
@@ -68,6 +71,7 @@ struct CheckReport {
   std::vector<CaseResult> cases;  ///< presets in input order, each preset's rates fps-major
   std::size_t presets_total = 0;  ///< before sharding
   Shard shard;
+  nlohmann::json engine;          ///< {name, version, settings} of the options' engine; null: the default
 };
 
 /// "mouse@60x1": the case's key in baselines, text lines and JUnit.
@@ -95,7 +99,7 @@ CheckReport run_checks(const std::vector<CheckInput>& inputs, const CheckOptions
 /// The expectations of a check: [{probe, metric, mass_model, value, min, max, passed, note}].
 nlohmann::json expectations_json(const scene::CheckResult& check);
 
-/// The report as JSON: {passed, presets_total, shard, cases: [{preset, fps, substeps, key, passed,
+/// The report as JSON: {passed, presets_total, shard, engine (when one was named), cases: [{preset, fps, substeps, key, passed,
 /// expectations, problem?, drift: [{figure, baseline, value, message}], in_baseline, figures}]}.
 nlohmann::json check_report_json(const CheckReport& report);
 

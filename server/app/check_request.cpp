@@ -7,6 +7,7 @@
 #include "app/check_junit.h"
 #include "app/preset_store.h"
 #include "app/request_cost.h"
+#include "app/simulate_app.h"
 #include "codec/list_reader.h"
 #include "codec/problem.h"
 #include "softtune/scene/limits.h"
@@ -39,6 +40,7 @@ void read_check_options(ObjectReader& r, CheckOptions& options) {
   if (auto v = read_number_list(r, "fps", scene::limits::kMaxRates, softtune::limits::kMinFps, scene::limits::kMaxSceneFps, "Hz")) options.fps = *v;
   if (auto v = read_integer_list(r, "substeps", scene::limits::kMaxRates, 1, scene::limits::kMaxSceneSubsteps)) options.substeps = *v;
   if (auto s = r.string("shard")) options.shard = parse_shard(*s, r.field("shard"));
+  options.engine = read_request_engine(r);
 }
 
 CheckPlan plan_check_request(const json& request, const std::string& presets_dir) {

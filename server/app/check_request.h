@@ -17,7 +17,8 @@ inline constexpr std::size_t kMaxCheckPresets = 256, kMaxCheckScenes = 16;
 /// "I/N" with 1 <= I <= N <= kMaxShards; Problem (422) naming `field` otherwise.
 Shard parse_shard(const std::string& text, const std::string& field);
 
-/// Reads "fps" (up to 16 frame rates, Hz), "substeps" (up to 16 counts) and "shard" ("I/N") into options.
+/// Reads "fps" (up to 16 frame rates, Hz), "substeps" (up to 16 counts), "shard" ("I/N") and the scene engine
+/// ("engine", "engine_settings": read_request_engine) into options.
 void read_check_options(codec::ObjectReader& r, CheckOptions& options);
 
 /// What POST /api/v1/check answers: the JSON report, or JUnit XML when the request asks "format": "junit".
@@ -27,7 +28,8 @@ struct CheckAnswer {
   std::string xml;
 };
 
-/// POST /api/v1/check: {"presets": [NAME...]?, "scenes": [{scene}...]?, "fps"?, "substeps"?, "shard"?,
+/// POST /api/v1/check: {"presets": [NAME...]?, "scenes": [{scene}...]?, "fps"?, "substeps"?, "shard"?, "engine"?,
+/// "engine_settings"?,
 /// "baseline": {baseline document}?, "format": "json" | "junit"?}; neither presets nor scenes: every preset of
 /// `presets_dir`. Refused (422 naming presets, scenes, fps and substeps) when its work estimate exceeds
 /// kMaxCheckWork.

@@ -7,12 +7,20 @@
 #include "codec/preset_limits_codec.h"
 #include "codec/problem.h"
 #include "codec/scene_codec.h"
+#include "codec/scene_engine_codec.h"
+#include "app/simulate_app.h"
 
 namespace softtune::app {
 
 using nlohmann::json;
 
-json run_preset_stability(const std::string& name, const std::string& presets_dir) {
+json run_preset_stability(const std::string& name, const std::string& presets_dir, const json& engine_doc) {
+  codec::ObjectReader engine_reader = codec::read_object(engine_doc, "");
+  const codec::SceneEngineChoice engine = read_request_engine(engine_reader);
+  if (engine.backend->name != codec::kDefaultSceneEngine) {
+    throw codec::invalid_field("engine", "the preset search bisects Box2D 2.4's own twin runs: " + std::string(engine.backend->name) +
+                                             " has no stability search yet (simulate runs the preset in it)");
+  }
   const scene::Scene scene = codec::decode_scene(load_preset(presets_dir, name));
   if (scene.modal_tuning) {
     throw codec::invalid_field("preset", "is modal-tuned (modal_tuning): its joints carry a modal solve, not their own frequency");
@@ -27,7 +35,9 @@ json run_preset_stability(const std::string& name, const std::string& presets_di
   const scene::PresetStabilityResult result = scene::preset_stability_limits(scene, settings);
   if (result.error) throw codec::invalid_field("preset." + result.error->field, result.error->rule);
   stages.add(Stage::stability_sweep);
-  return codec::encode_preset_limits(name, settings, result, stages);
+  json out = codec::encode_preset_limits(name, settings, result, stages);
+  out["engine"] = codec::scene_engine_json(engine);
+  return out;
 }
 
 namespace {

@@ -10,7 +10,10 @@ namespace softtune::app {
 
 /// Loads preset `name` from `presets_dir` (404 when absent), refuses a modal-tuned one (its joints carry a
 /// modal solve, not their own frequency) and one over the budget, then searches it.
-nlohmann::json run_preset_stability(const std::string& name, const std::string& presets_dir);
+/// `engine` holds the request's "engine" and "engine_settings" (read as simulate reads them): the search steps
+/// Box2D 2.4's own twin runs, so another engine is a 422 naming `engine`; the answer names the engine.
+nlohmann::json run_preset_stability(const std::string& name, const std::string& presets_dir,
+                                    const nlohmann::json& engine = nlohmann::json::object());
 
 /// The per-joint table `softtune stability --preset` prints: joint, asked, highest stable (stable side),
 /// unstable side, kind, evaluations, margin asked / limit.

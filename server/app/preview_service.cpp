@@ -107,7 +107,7 @@ std::string layers_text(const SceneLayers& l) {
 
 // `prefix` is where the scene sits in the request ("scene." or ""), for the cost's field names.
 void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::MassModel> mass_model,
-                const json* ghost_doc, const json* layers_doc, const std::string& prefix) {
+                const SceneEngineChoice& engine, const json* ghost_doc, const json* layers_doc, const std::string& prefix) {
   const scene::Scene scene = decode_requested_scene(scene_doc, prefix);
   const SceneLayers layers = read_layers(layers_doc, scene);
   std::optional<scene::Scene> ghost;
@@ -119,6 +119,8 @@ void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::M
   options.record_frames = true;
   options.record_at = render::spread_frames(total, plan.settings.frames);
   options.mass_model = mass_model;
+  apply_scene_engine(engine, options);
+  plan.engine = scene_engine_json(engine);
   plan.frame_dt_s = mean_frame_dt(total, scene.world.fps, plan.settings.frames);
   plan.run_end_s = total / scene.world.fps;
   // The run happens on the render pool, which draws one preview at a time: a scene over the budget would
@@ -133,7 +135,7 @@ void plan_scene(PreviewPlan& plan, const json& scene_doc, std::optional<scene::M
   require_within_budget(cost);
   plan.canonical = "scene:" + scene_doc.dump() + "|mass_model:" +
                    (mass_model ? std::string(scene::mass_model_name(*mass_model)) : "scene") +
-                   "|spread:" + std::to_string(plan.settings.frames) + "|layers:" + layers_text(layers) + (ghost_doc ? "|ghost:" + ghost_doc->dump() : "");
+                   "|engine:" + scene_engine_key(engine) + "|spread:" + std::to_string(plan.settings.frames) + "|layers:" + layers_text(layers) + (ghost_doc ? "|ghost:" + ghost_doc->dump() : "");
   const int frames = plan.settings.frames;
   auto stages = plan.prepare_stages;
   plan.make_frames = [scene, ghost, options, frames, stages, layers] {
@@ -173,6 +175,9 @@ PreviewPlan plan_preview(const json& request, const std::string& presets_dir) {
     plan.wait = v->get<bool>();
   }
   const auto mass_model = read_mass_model(r);
+  // Read for every preview, so a page sends its engine with each one; the oscillator's core integrators
+  // ignore it, as a simulate of a scene without bodies does.
+  const SceneEngineChoice engine = read_request_engine(r);
   if (auto name = r.string("animation")) {
     plan.clip = render::clip_format(*name);
     if (!plan.clip) throw invalid_field("animation", "must be \"webp\" or \"gif\"");
@@ -200,7 +205,7 @@ PreviewPlan plan_preview(const json& request, const std::string& presets_dir) {
     const json tuning = oscillator_preset_tuning(preset, x0, duration_s);
     plan_oscillator(plan, decode_tune_request(tuning), x0, duration_s);
   } else if (r.has("preset") || r.has("scene")) {
-    plan_scene(plan, requested_scene_document(r, request, presets_dir, {}), mass_model, ghost, r.raw("layers"),
+    plan_scene(plan, requested_scene_document(r, request, presets_dir, {}), mass_model, engine, ghost, r.raw("layers"),
                r.has("scene") ? "scene." : "");
   } else if (has_tune_fields) {
     plan_oscillator(plan, read_tune_fields(r), 0.5, render::OscillatorScene{}.duration_s);
@@ -280,6 +285,7 @@ json PreviewService::start(const json& request, const std::string& presets_dir, 
   }
   out["frame_dt_s"] = plan.frame_dt_s;
   out["warnings"] = plan.warnings;
+  if (!plan.engine.is_null()) out["engine"] = plan.engine;
   return out;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Preview frames for a request: {"preset": NAME} or {"scene": {...}} (a Box2D scene, drawn from its
 // snapshots), or tune fields (the 1-D oscillator with its analytic ghost), plus "frames", "size",
-// "filmstrip_every", "mass_model", "animation" ("webp" or "gif": a clip encoded while the frames render)
+// "filmstrip_every", "mass_model", "engine" and "engine_settings" (a scene's engine, simulate_app.h), "animation" ("webp" or "gif": a clip encoded while the frames render)
 // and "wait". One long-lived frame pipeline serves every request; its
 // workers start their raster processes (softtune-raster, which hold the GL contexts) only when the first
 // frame is asked for, and end them when idle (render::PipelineOptions::release_renderer_after_ms).
@@ -30,6 +30,7 @@ struct PreviewPlan {
   double frame_dt_s = 0.0;        ///< s of scene time between frames on average, so a client plays them in real time
   double run_end_s = 0.0;         ///< s, the run's end: the last frame's time (a run that stopped early ends sooner)
   nlohmann::json warnings = nlohmann::json::array();
+  nlohmann::json engine;          ///< a scene preview: the engine it runs in {name, version, settings}; null otherwise
   std::shared_ptr<StageList> prepare_stages = std::make_shared<StageList>();  ///< filled by make_frames
 };
 

@@ -7,6 +7,9 @@
 #include "codec/json_writer.h"
 #include "codec/problem.h"
 #include "codec/scene_codec.h"
+#include "codec/scene_engine_codec.h"
+#include "codec/settings_codec.h"
+#include "softtune/engines/scene_backends.h"
 #include "softtune/scene/expectations.h"
 #include "softtune/scene/runner.h"
 
@@ -59,11 +62,14 @@ Scene decode_requested_scene(const json& scene_doc, const std::string& prefix) {
   }
 }
 
+SceneEngineChoice read_request_engine(ObjectReader& r) { return read_scene_engine(r, engines::scene_backends()); }
+
 json run_simulate(const json& request, const std::string& presets_dir) {
   ObjectReader r = read_object(request, "");
-  const json scene_doc = requested_scene_document(r, request, presets_dir, {"frames", "frame_stride"});
+  const json scene_doc = requested_scene_document(r, request, presets_dir, kSceneRunOptions);
   RunOptions options;
   options.mass_model = read_mass_model(r);
+  apply_scene_engine(read_request_engine(r), options);
   options.record_frames = read_bool(r, "frames", false);
   if (auto stride = r.integer("frame_stride")) {
     if (*stride < 1 || *stride > kMaxFrameStride) {
@@ -92,6 +98,30 @@ json presets_index(const std::string& presets_dir) {
     }
   }
   return {{"presets", std::move(list)}};
+}
+
+json scene_engines_index() {
+  json list = json::array();
+  for (const SceneBackend* b : engines::scene_backends()) {
+    json settings = json::array();
+    for (const engines::SettingSpec& spec : b->settings) {
+      json s = {{"name", spec.name}, {"min", spec.min}, {"max", spec.max}, {"integer", spec.integer}};
+      if (is_switch_setting(spec)) {
+        s["default"] = spec.default_value != 0.0;
+      } else if (!spec.choices.empty()) {
+        s["default"] = spec.choices[static_cast<std::size_t>(spec.default_value)];
+        s["choices"] = std::vector<std::string>(spec.choices.begin(), spec.choices.end());
+      } else {
+        s["default"] = spec.default_value;
+      }
+      if (!spec.unit.empty()) s["unit"] = spec.unit;
+      if (!spec.meaning.empty()) s["meaning"] = spec.meaning;
+      settings.push_back(std::move(s));
+    }
+    list.push_back({{"name", b->name}, {"version", b->version}, {"default", b->name == kDefaultSceneEngine},
+                    {"settings", std::move(settings)}});
+  }
+  return {{"engines", std::move(list)}};
 }
 
 json preset_document(const std::string& presets_dir, const std::string& name) { return load_preset(presets_dir, name); }

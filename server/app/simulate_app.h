@@ -9,13 +9,15 @@
 
 #include "codec/json_reader.h"
 #include "codec/problem.h"
+#include "codec/scene_engine_codec.h"
 #include "softtune/scene/scene.h"
 
 namespace softtune::app {
 
 /// A simulate request: {"preset": NAME} or {"scene": {...}} (either with an optional "tuning") or a bare
 /// scene, plus the options
-/// "mass_model" ("effective" | "box2d_reduced"), "frames" (bool) and "frame_stride" (1..1000).
+/// "mass_model" ("effective" | "box2d_reduced"), "frames" (bool), "frame_stride" (1..1000), "engine" (a
+/// registered scene backend, default "box2d_v2_4") and "engine_settings" ({setting: value} of that engine).
 /// Presets come from `presets_dir`; a full scene is validated against `presets_dir`/schema.json too.
 nlohmann::json run_simulate(const nlohmann::json& request, const std::string& presets_dir);
 
@@ -32,12 +34,23 @@ scene::Scene decode_requested_scene(const nlohmann::json& scene_doc, const std::
 /// problem about the whole document).
 codec::Problem prefixed(const codec::Problem& p, const std::string& prefix);
 
+/// The keys of a simulate request that are not the scene's (a bare scene's document is the request without them).
+inline constexpr std::initializer_list<const char*> kSceneRunOptions = {"frames", "frame_stride", "engine", "engine_settings"};
+
+/// The request's "engine" and "engine_settings", read against the registered scene backends
+/// (engines/scene_backends.h): 422 naming `engine` (and listing them) or `engine_settings.<setting>`.
+codec::SceneEngineChoice read_request_engine(codec::ObjectReader& r);
+
 /// The same with the presets directory from resolve_presets_dir().
 nlohmann::json run_simulate(const nlohmann::json& request);
 
 /// GET /api/v1/presets: {"presets": [{"name", "description", "valid", "problem"?}]}; a preset that fails its
 /// schema is listed with valid = false and the problem.
 nlohmann::json presets_index(const std::string& presets_dir);
+/// GET /api/v1/scene-engines: {"engines": [{name, version, default, settings: [{name, default, min, max, integer,
+/// choices?, unit?, meaning?}]}]}, the registered scene backends in order (the page's engine picker reads it).
+nlohmann::json scene_engines_index();
+
 /// GET /api/v1/presets/{name}: the preset document itself.
 nlohmann::json preset_document(const std::string& presets_dir, const std::string& name);
 

@@ -42,7 +42,7 @@ json sweep_and_encode(const codec::StabilityRequest& q, JobProgress* progress) {
 }  // namespace
 
 json run_stability(const codec::StabilityRequest& q, const std::string& presets_dir) {
-  if (q.preset) return run_preset_stability(*q.preset, presets_dir.empty() ? resolve_presets_dir() : presets_dir);
+  if (q.preset) return run_preset_stability(*q.preset, presets_dir.empty() ? resolve_presets_dir() : presets_dir, q.preset_engine);
   require_within_budget(stability_cost(q), request_budget(job_route_hint(kStabilityJobsRoute)));
   return sweep_and_encode(q, nullptr);
 }

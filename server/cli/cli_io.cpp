@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "codec/json_reader.h"
+#include "cli/engine_flags.h"
 #include "codec/problem.h"
 
 namespace softtune::cli {
@@ -92,6 +93,7 @@ nlohmann::json scene_request_from(const Flags& flags) {
     if (!request.is_object()) throw codec::invalid_field("--request", "must hold a JSON object");
   }
   if (auto m = flags.get("mass-model")) request["mass_model"] = *m;
+  set_engine_from_flags(flags, request);
   return request;
 }
 

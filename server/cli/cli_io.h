@@ -38,7 +38,8 @@ nlohmann::json read_request_file(const std::string& path);
 nlohmann::json request_from(const Flags& flags, const std::function<nlohmann::json()>& from_flags);
 
 /// The scene request of `simulate` and `modes`: {"preset": NAME} from `--preset NAME`, or the JSON object in
-/// `--request FILE` (exactly one of the two), with `--mass-model M` as its mass_model.
+/// `--request FILE` (exactly one of the two), with `--mass-model M` as its mass_model and `--engine`,
+/// `--engine-settings` as its engine (cli/engine_flags.h).
 nlohmann::json scene_request_from(const Flags& flags);
 
 /// Prints a JSON document on stdout.

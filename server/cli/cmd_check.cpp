@@ -12,6 +12,7 @@
 #include "app/check_request.h"
 #include "app/preset_store.h"
 #include "cli/cli_io.h"
+#include "cli/engine_flags.h"
 #include "codec/problem.h"
 
 namespace softtune::cli {
@@ -32,6 +33,8 @@ constexpr const char* kCheckHelp = R"HELP(softtune check [DIR|FILE...] [flags]: 
   --update-baseline     write the figures measured now into --baseline FILE (other cases kept)
   -j N                  check N cases at once (1..64, default 1); the output order does not change
   --shard I/N           check only shard I of N: every N-th preset by name, from the I-th
+  --engine NAME         run every case in this engine (default box2d_v2_4)
+  --engine-settings name=value,...   that engine's own step settings
 
 Text lines: "NAME@FPSxSUBSTEPS PASS|FAIL metric=value[min,max] ..." (a failed expectation is marked "!",
 a drifted figure "~figure=value(baseline B)"); a summary goes to stderr.
@@ -108,7 +111,7 @@ Args with_long_jobs_flag(const Args& args) {
 
 int run_check(const Args& args) {
   return guarded([&] {
-    const Flags flags = parse_flags(with_long_jobs_flag(args), {"fps", "substeps", "format", "baseline", "jobs", "shard"},
+    const Flags flags = parse_flags(with_long_jobs_flag(args), {"fps", "substeps", "format", "baseline", "jobs", "shard", "engine", "engine-settings"},
                                     {"json", "help", "update-baseline"});
     if (flags.has("help")) {
       std::cout << kCheckHelp;
@@ -122,6 +125,7 @@ int run_check(const Args& args) {
       if (flags.has(list)) request[list] = list_from_flag(flags, list);
     }
     if (auto shard = flags.get("shard")) request["shard"] = *shard;
+    set_engine_from_flags(flags, request);
     app::CheckOptions options;
     try {
       codec::ObjectReader r(request, "");

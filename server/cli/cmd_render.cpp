@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/cli_io.h"
+#include "cli/engine_flags.h"
 #include "cli/flag_fields.h"
 #include "codec/json_reader.h"
 #include "app/preset_store.h"
@@ -19,6 +20,8 @@ constexpr const char* kRenderHelp = R"(softtune render: preview frames of a pres
     --frames N            frames to render (default 60, at most 600)
     --presets DIR         where presets live (default $SOFTTUNE_PRESETS, else ./presets)
     --mass-model M        effective | box2d_reduced (scene presets)
+    --engine NAME         the engine a scene preset runs in (default box2d_v2_4)
+    --engine-settings name=value,...   that engine's own step settings
     --size WxH            frame size in pixels (default 640x360, at most 1920x1080)
     --filmstrip-every N   frames between filmstrip tiles (default: about 10 tiles)
     --animation F         also write the frames as a clip: webp or gif (DIR/animation.F)
@@ -70,7 +73,7 @@ int run_render(const Args& args) {
   return guarded([&] {
     std::vector<std::string> with_value = flag_names(kTuneFlags);
     with_value.insert(with_value.end(), {"preset", "frames", "size", "filmstrip-every", "out", "request", "presets",
-                                         "mass-model", "animation"});
+                                         "mass-model", "animation", "engine", "engine-settings"});
     const Flags flags = parse_flags(args, with_value, {"help"});
     if (flags.has("help")) {
       std::cout << kRenderHelp;
@@ -95,6 +98,7 @@ int run_render(const Args& args) {
     if (flags.has("filmstrip-every")) request["filmstrip_every"] = flag_number(flags, "filmstrip-every");
     if (auto size = flags.get("size")) request["size"] = *size;
     if (auto model = flags.get("mass-model")) request["mass_model"] = *model;
+    set_engine_from_flags(flags, request);
     std::optional<render::ClipFormat> clip;
     if (auto name = flags.get("animation")) {
       clip = render::clip_format(*name);

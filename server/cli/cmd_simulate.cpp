@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/cli_io.h"
+#include "cli/engine_flags.h"
 #include "app/preset_store.h"
 #include "codec/problem.h"
 #include "app/simulate_app.h"
@@ -18,6 +19,8 @@ constexpr const char* kSimulateHelp = R"(softtune simulate: run a scene and meas
     --mass-model M       effective (default) | box2d_reduced: the mass k, c are computed with
     --frames             also record per-frame snapshots (bodies and joints in world coordinates)
     --frame-stride N     record every N-th frame (default 1)
+    --engine NAME        the engine the scene runs in (default box2d_v2_4; GET /api/v1/scene-engines lists them)
+    --engine-settings name=value,...   that engine's own step settings (GET /api/v1/scene-engines)
 
 Prints one JSON object: stages, joints (m_eff, k, c), probes (requested, measured, error, series).
 Bad input: exit code 2 and a problem JSON on stderr naming the field.
@@ -27,7 +30,7 @@ Bad input: exit code 2 and a problem JSON on stderr naming the field.
 
 int run_simulate(const Args& args) {
   return guarded([&] {
-    const Flags flags = parse_flags(args, {"preset", "request", "presets", "mass-model", "frame-stride"}, {"frames", "help"});
+    const Flags flags = parse_flags(args, with_engine_flags({"preset", "request", "presets", "mass-model", "frame-stride"}), {"frames", "help"});
     if (flags.has("help")) {
       std::cout << kSimulateHelp;
       return kExitOk;

@@ -5,6 +5,7 @@
 #include "app/preset_store.h"
 #include "app/stability_app.h"
 #include "cli/cli_io.h"
+#include "cli/engine_flags.h"
 #include "codec/problem.h"
 #include "codec/stability_codec.h"
 
@@ -17,6 +18,8 @@ constexpr const char* kStabilityHelp = R"(softtune stability: predicted (step ma
   softtune stability --preset NAME   each tuned joint's highest stable frequency in Box2D 2.4 (a table;
                                      --format json for the JSON), found on the real solver's motion
     --presets DIR       presets directory (default: $SOFTTUNE_PRESETS, else ./presets)
+    --engine NAME       the scene engine (default box2d_v2_4; the search bisects Box2D 2.4's twin runs, so
+                        another engine is refused naming engine)
   softtune stability --request FILE  a custom sweep (- for stdin): methods, frequency_ratios, stiffnesses,
                                      damping_ratios, masses, steps, max_stiffness, observe_steps,
                                      include_cases, chain
@@ -30,7 +33,7 @@ Exit code 0 when every observation matches its prediction, 1 otherwise; bad inpu
 
 int run_stability(const Args& args) {
   return guarded([&] {
-    const Flags flags = parse_flags(args, {"request", "format", "preset", "presets"}, {"help", "summary"});
+    const Flags flags = parse_flags(args, with_engine_flags({"request", "format", "preset", "presets"}), {"help", "summary"});
     if (flags.has("help")) {
       std::cout << kStabilityHelp;
       return kExitOk;
@@ -42,6 +45,7 @@ int run_stability(const Args& args) {
     if (auto name = flags.get("preset")) {
       if (!doc.is_null()) throw codec::invalid_field("--preset", "runs alone: drop --request");
       doc = {{"preset", *name}};
+      set_engine_from_flags(flags, doc);
     }
     codec::StabilityRequest q = codec::decode_stability_request(doc);
     if (flags.has("summary") || format == app::Format::svg) q.include_cases = false;

@@ -203,6 +203,11 @@ json scene_joint_json(const Scene& scene, const SceneResult& run, std::size_t i)
   json j = {{"id", t.joint}, {"type", joint_kind_name(js.kind)}, {"tuned", t.tuned}, {"typed", t.typed},
             {"angular", t.angular}, {"effective_mass", number_or_null(t.effective_mass)},
             {"box2d_reduced_mass", number_or_null(t.box2d_reduced_mass)}};
+  // What to type into the engine that ran, under its own field names (SceneBackend::fields): the values the
+  // page's Copy copies for a scene joint, in every engine alike.
+  if (i < run.joint_fields.size() && !run.joint_fields[i].empty()) {
+    j["parameters"] = {{"engine", run.engine}, {"values", engine_values_json(run.joint_fields[i])}};
+  }
   if (t.typed) {
     j["mass_model"] = mass_model_name(t.mass_model);
     j["model_mass"] = number_or_null(t.model_mass);

@@ -19,7 +19,8 @@
 namespace softtune::codec {
 
 /// joints[i] of a simulate answer: id, type, tuned, typed, masses, stiffness, damping, requested, warnings,
-/// engines, engine_settings and, for a solved joint, `answer` (the tune-shaped object the page draws, with the
+/// engines, engine_settings, `parameters` ({engine, values}: what to type into the engine that ran, from
+/// SceneResult::joint_fields, when the joint has a spring) and, for a solved joint, `answer` (the tune-shaped object the page draws, with the
 /// joint's `engines` beside it rather than inside).
 nlohmann::json scene_joint_json(const scene::Scene& scene, const scene::SceneResult& run, std::size_t i);
 

@@ -6,6 +6,7 @@
 #include "codec/joint_answer_codec.h"
 #include "codec/json_writer.h"
 #include "codec/modes_codec.h"
+#include "codec/scene_engine_codec.h"
 #include "codec/list_reader.h"
 #include "codec/problem.h"
 #include "codec/tune_codec.h"
@@ -307,6 +308,7 @@ json encode_scene_result(const Scene& scene, const SceneResult& r) {
   json out = {
       {"name", scene.name},
       {"mass_model", mass_model_name(r.mass_model)},
+      {"engine", scene_engine_json(r)},
       {"stages", stages_json(r.stages)},
       {"frames", r.frames},
       {"fps", scene.world.fps},

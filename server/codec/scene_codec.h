@@ -19,7 +19,7 @@ inline constexpr int kMaxFrameStride = 1000;
 /// references; throws Problem (422) naming the dotted field and the rule.
 scene::Scene decode_scene(const nlohmann::json& doc);
 
-/// Encodes a run: name, mass_model, stages, joints (m_eff, k, c), oscillators, probes (requested, measured,
+/// Encodes a run: name, mass_model, engine {name, version, settings}, stages, joints (m_eff, k, c, and `parameters`: what to type into the engine that ran), oscillators, probes (requested, measured,
 /// error, series), max_constraint_error, finite, left_world, and `frames` when snapshots were recorded.
 nlohmann::json encode_scene_result(const scene::Scene& scene, const scene::SceneResult& result);
 

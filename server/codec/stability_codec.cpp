@@ -203,6 +203,12 @@ StabilityRequest decode_stability_request(const json& doc) {
   if (auto name = r.string("preset")) {
     if (name->empty() || name->size() > kMaxPresetName) throw invalid_field("preset", "must be a preset name of 1 to 64 characters");
     for (const auto& item : doc.items()) {
+      // The scene engine may come with it; the app layer reads it against the scene backends.
+      if (item.key() == "engine" || item.key() == "engine_settings") {
+        q.preset_engine[item.key()] = item.value();
+        r.raw(item.key());
+        continue;
+      }
       if (item.key() != "preset") throw invalid_field(item.key(), "is not allowed beside preset (a preset search runs alone)");
     }
     q.preset = *name;

@@ -31,6 +31,9 @@ struct StabilityRequest {
   /// A preset's name: its tuned joints' highest stable frequencies (scene/preset_stability.h) instead of
   /// the sweep and the chain; it runs alone (other sweep fields beside it are refused).
   std::optional<std::string> preset;
+  /// With a preset: its "engine" and "engine_settings" as given (an object; empty: the default engine), read
+  /// by the app layer against the scene backends (app/simulate_app.h read_request_engine).
+  nlohmann::json preset_engine = nlohmann::json::object();
 };
 
 /// Longest `preset` name (app::kMaxPresetNameLength; the preset store checks the characters).

@@ -6,6 +6,7 @@
 
 #include "codec/json_writer.h"
 #include "codec/problem.h"
+#include "codec/settings_codec.h"
 #include "codec/stability_codec.h"
 #include "softtune/chain_solvers.h"
 #include "softtune/validation.h"
@@ -126,8 +127,8 @@ std::string choices_text(std::span<const std::string_view> names) {
   return out;
 }
 
-// engine_settings: {"<engine>": {"<setting>": number or choice}}, checked against each model's specs
-// (engines/engine_model.h SettingSpec: range, integer, choices). Unknown engines and settings are refused.
+// engine_settings: {"<engine>": {"<setting>": number or choice}}, each engine's object checked against its
+// model's specs (codec/settings_codec.h). Unknown engines and settings are refused.
 std::vector<engines::SettingValues> read_engine_settings(ObjectReader& r) {
   const json* v = r.raw("engine_settings");
   if (!v) return {};
@@ -143,42 +144,7 @@ std::vector<engines::SettingValues> read_engine_settings(ObjectReader& r) {
     if (index == models.size()) {
       throw invalid_field(field + "." + name, "is not a modelled engine: one of " + choices_text(names));
     }
-    const engines::EngineModel& model = *models[index];
-    ObjectReader s = read_object(settings, field + "." + name);
-    engines::SettingValues values = engines::default_settings(model);
-    for (std::size_t i = 0; i < model.settings.size(); ++i) {
-      const engines::SettingSpec& spec = model.settings[i];
-      if (!spec.choices.empty()) {
-        // A switch (choices "false", "true") takes a JSON boolean, as the engine's own API does.
-        const bool is_switch = spec.choices.size() == 2 && spec.choices[0] == "false" && spec.choices[1] == "true";
-        if (is_switch) {
-          const json* raw = s.raw(spec.name);
-          if (!raw) continue;
-          if (!raw->is_boolean()) throw invalid_field(s.field(spec.name), "must be true or false");
-          values[i] = raw->get<bool>() ? 1.0 : 0.0;
-          continue;
-        }
-        const std::vector<std::string_view> choices(spec.choices.begin(), spec.choices.end());
-        if (auto c = s.choice(spec.name, choices)) values[i] = static_cast<double>(*c);
-        continue;
-      }
-      std::optional<double> x;
-      if (spec.integer) {
-        if (auto n = s.integer(spec.name)) x = static_cast<double>(*n);
-      } else {
-        x = s.number(spec.name);
-      }
-      if (!x) continue;
-      if (!(*x >= spec.min && *x <= spec.max)) {
-        char rule[160];
-        std::snprintf(rule, sizeof rule, "must be %s in [%.17g, %.17g]", spec.integer ? "an integer" : "a number",
-                      spec.min, spec.max);
-        throw invalid_field(s.field(spec.name), rule);
-      }
-      values[i] = *x;
-    }
-    s.finish();
-    out[index] = std::move(values);
+    out[index] = read_setting_values(settings, field + "." + name, models[index]->settings);
   }
   return out;
 }

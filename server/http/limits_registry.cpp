@@ -226,6 +226,9 @@ std::vector<LimitRow> request_rows() {
       {"engine settings", "each engine model's settings: its own range, integer or choice",
        "the model's `SettingSpec`s, `core/src/engines/<engine>.cpp`",
        "422 naming `engine_settings.<engine>.<setting>`"},
+      {"scene engine", "a scene backend of this build (GET /api/v1/scene-engines) and its own settings: range, integer or choice",
+       "the backend's `SettingSpec`s, `engines/scene_backends.cpp`",
+       "422 naming `engine` (listing the engines) or `engine_settings.<setting>`; a scene feature the engine cannot represent: 422 naming the feature"},
       {"scenes",
        "gravity <= " + figure(sl::kMaxGravity) + " m/s^2 per component, fps <= " + figure(sl::kMaxSceneFps) +
            " Hz, substeps <= " + figure(sl::kMaxSceneSubsteps) + ", iterations <= " + figure(sl::kMaxIterations) +

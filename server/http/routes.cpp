@@ -1,6 +1,7 @@
 #include "http/routes.h"
 
 #include "app/modes_app.h"
+#include "app/simulate_app.h"
 #include "app/verify_app.h"
 #include "codec/json_reader.h"
 #include "app/tune_app.h"
@@ -96,6 +97,7 @@ std::vector<Route> service_routes() {
       {"POST", std::string(kIdentifyPath), identify, {"*"}},
       {"GET", "/api/v1/presets", presets},
       {"GET", "/api/v1/presets/{name}", preset},
+      {"GET", "/api/v1/scene-engines", [](const HttpRequest&, Service&) { return json_response(app::scene_engines_index()); }},
       {"POST", "/api/v1/accuracy", accuracy, {"format"}},
       {"GET", "/api/v1/stability", default_stability(), {"format"}},
       {"POST", "/api/v1/stability", stability, {"format"}},

@@ -39,6 +39,8 @@ TEST(CheckRequest, BadFieldsAreNamed) {
   EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"format", "xml"}}), "422 format");
   EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"baseline", {{"cases", 1}}}}), "422 baseline.softtune_baseline");
   EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"jobs", 4}}), "422 jobs");
+  EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"engine", "havok"}}), "422 engine");
+  EXPECT_EQ(refused_field({{"presets", {"mouse"}}, {"engine_settings", {{"noSuchSetting", 1}}}}), "422 engine_settings.noSuchSetting");
   EXPECT_EQ(refused_field({{"scenes", {{{"name", "x"}, {"world", {{"fps", 0}, {"duration_s", 1}}}}}}}), "422 scenes.0.world.fps");
   // every preset at 16 rates x 16 substep counts: refused before any step
   json many = json::array(), subs = json::array();
@@ -47,6 +49,21 @@ TEST(CheckRequest, BadFieldsAreNamed) {
     subs.push_back(i + 1);
   }
   EXPECT_EQ(refused_field({{"fps", many}, {"substeps", subs}}), "422 presets, scenes, fps, substeps");
+}
+
+// The engine every case runs in is named in the report; the default engine named checks as before.
+TEST(CheckRequest, TheReportNamesTheEngineItRan) {
+  const CheckAnswer named = run_check_request({{"presets", {"mouse"}}, {"engine", "box2d_v2_4"}}, SOFTTUNE_PRESETS_DIR);
+  const CheckAnswer plain = run_check_request({{"presets", {"mouse"}}}, SOFTTUNE_PRESETS_DIR);
+  EXPECT_EQ(named.json["engine"]["name"], "box2d_v2_4");
+  EXPECT_TRUE(named.json["passed"].get<bool>());
+  ASSERT_EQ(named.json["cases"].size(), plain.json["cases"].size());
+  EXPECT_EQ(named.json["cases"][0]["figures"], plain.json["cases"][0]["figures"]);
+  // In an engine that cannot represent the preset, its case fails with the engine's refusal.
+  const CheckAnswer bullet = run_check_request({{"presets", {"mouse"}}, {"engine", "bullet"}}, SOFTTUNE_PRESETS_DIR);
+  EXPECT_EQ(bullet.json["engine"]["name"], "bullet");
+  EXPECT_FALSE(bullet.json["passed"].get<bool>());
+  EXPECT_EQ(bullet.json["cases"][0]["problem"]["field"], "joints.0.max_force");
 }
 
 TEST(CheckRequest, InlineScenesAndPresetsAnswerJsonOrJunit) {

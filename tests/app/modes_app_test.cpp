@@ -64,6 +64,19 @@ TEST(ModesApp, RefusesBadRequestsNamingTheField) {
   EXPECT_EQ(problem_field([] { return run_modes({{"preset", "vehicle"}, {"at_s", "soon"}}, kPresets); }), "at_s");
   EXPECT_EQ(problem_field([] { return run_modes({{"preset", "oscillator"}}, kPresets); }), "bodies");
   EXPECT_EQ(problem_field([] { return run_modes({{"preset", "vehicle"}, {"extra", 1}}, kPresets); }), "extra");
+  EXPECT_EQ(problem_field([] { return run_modes({{"preset", "vehicle"}, {"engine", "havok"}}, kPresets); }), "engine");
+  EXPECT_EQ(problem_field([] { return run_modes({{"preset", "vehicle"}, {"engine_settings", {{"noSuchSetting", 1}}}}, kPresets); }),
+            "engine_settings.noSuchSetting");
+}
+
+// The modes answer names the engine whose step was linearised: the default, Box2D 2.4, named or not.
+TEST(ModesApp, TheAnswerNamesTheEngine) {
+  const json named = run_modes({{"preset", "vehicle_per_spring"}, {"engine", "box2d_v2_4"}}, kPresets);
+  EXPECT_EQ(named, run_modes({{"preset", "vehicle_per_spring"}}, kPresets));
+  EXPECT_EQ(named["engine"]["name"], "box2d_v2_4");
+  EXPECT_FALSE(named["engine"]["version"].get<std::string>().empty());
+  // Another engine's step is not linearised: refused naming `engine`, never Box2D's modes under its name.
+  EXPECT_EQ(problem_field([] { return run_modes({{"preset", "vehicle_per_spring"}, {"engine", "ode"}}, kPresets); }), "engine");
 }
 
 json vehicle_with(const json& target) {

@@ -33,6 +33,10 @@ TEST(PresetStabilityApp, RequestRulesNameTheField) {
   EXPECT_EQ(problem_of({{"preset", 3}}).field, "preset");
   EXPECT_EQ(problem_of({{"preset", "no_such_preset"}}).status, 404);
   EXPECT_EQ(problem_of({{"preset", "vehicle"}}).field, "preset");  // modal-tuned
+  // The scene engine rides beside the preset; an unknown one, or a setting it lacks, is named.
+  EXPECT_EQ(problem_of({{"preset", "stiff"}, {"engine", "havok"}}).field, "engine");
+  EXPECT_EQ(problem_of({{"preset", "stiff"}, {"engine", "bullet"}}).field, "engine");  // the search is Box2D's
+  EXPECT_EQ(problem_of({{"preset", "stiff"}, {"engine_settings", {{"noSuchSetting", 1}}}}).field, "engine_settings.noSuchSetting");
 }
 
 // The bridge (11 tuned hangers and all of them together, 14 bodies) is priced over the 2 s budget and

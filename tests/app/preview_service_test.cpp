@@ -262,5 +262,34 @@ TEST(PreviewService, TheAnswerCarriesTheFramesManifest) {
   EXPECT_EQ(service.status(answer["id"], "/p")->at("manifest"), m);
 }
 
+// The preview's engine (issue 32): the frames come from the picked engine's run (its stages, not Box2D's), the
+// cache key tells engines apart, and a scene the engine cannot represent is its 422 naming the feature.
+TEST(PreviewService, FramesComeFromThePickedEnginesRun) {
+  const json request = {{"preset", "vehicle_per_spring"}, {"frames", 6}};
+  PreviewPlan box2d = plan_preview(request, test_support::kPresets);
+  json in_ode = request;
+  in_ode["engine"] = "ode";
+  PreviewPlan ode = plan_preview(in_ode, test_support::kPresets);
+  EXPECT_EQ(box2d.engine["name"], "box2d_v2_4");
+  EXPECT_EQ(ode.engine["name"], "ode");
+  EXPECT_NE(box2d.canonical, ode.canonical);
+  const render::FrameSet a = box2d.make_frames(), b = ode.make_frames();
+  ASSERT_EQ(a.frames.size(), b.frames.size());
+  using softtune::Stage;
+  EXPECT_TRUE(box2d.prepare_stages->contains(Stage::box2d_step));
+  EXPECT_TRUE(ode.prepare_stages->contains(Stage::engine_step));
+  EXPECT_FALSE(ode.prepare_stages->contains(Stage::box2d_step));
+
+  json mouse = {{"preset", "mouse"}, {"frames", 4}, {"engine", "bullet"}};
+  try {
+    plan_preview(mouse, test_support::kPresets).make_frames();
+    ADD_FAILURE() << "bullet drew the capped mouse";
+  } catch (const Problem& p) {
+    EXPECT_EQ(p.status, 422);
+    EXPECT_EQ(p.field, "joints.0.max_force");
+    EXPECT_NE(p.detail.find("bullet"), std::string::npos) << p.detail;
+  }
+}
+
 }  // namespace
 }  // namespace softtune::codec

@@ -10,6 +10,7 @@
 #include "../presets_dir.h"
 #include "app/preset_store.h"
 #include "codec/problem.h"
+#include "softtune/engines/scene_backends.h"
 
 namespace softtune::codec {
 namespace {
@@ -203,6 +204,99 @@ TEST(Simulate, TypedRefusesNamesAndValuesNotTheEngines) {
   EXPECT_FALSE(run["joints"][0]["tuned"].get<bool>());
   EXPECT_TRUE((*probe_named(run, "rear_travel"))["requested"]["frequency_hz"].is_null());
   EXPECT_TRUE((*probe_named(run, "rear_travel"))["measured"]["frequency_hz"].is_number());
+}
+
+// `engine` (issue 32): naming the default engine answers exactly as before, and every answer says which engine
+// ran, its version and the settings it ran with; each joint with a spring says what to type into it, under the
+// engine's own names, the same values the 1-D Box2D export gives for the joint's k and c.
+TEST(Simulate, TheDefaultEngineNamedAnswersAsBeforeAndSaysWhichRan) {
+  const json before = run_simulate({{"preset", "buddhas"}}, kPresets);
+  const json named = run_simulate({{"preset", "buddhas"}, {"engine", "box2d_v2_4"}}, kPresets);
+  EXPECT_EQ(named, before);
+  const scene::SceneBackend& box2d = *engines::find_scene_backend("box2d_v2_4");
+  EXPECT_EQ(named["engine"]["name"], "box2d_v2_4");
+  EXPECT_EQ(named["engine"]["version"], std::string(box2d.version));
+  ASSERT_EQ(named["engine"]["settings"].size(), box2d.settings.size());
+  for (const engines::SettingSpec& spec : box2d.settings) EXPECT_TRUE(named["engine"]["settings"].contains(spec.name)) << spec.name;
+  int springs = 0;
+  for (const json& j : named["joints"]) {
+    if (!j["tuned"].get<bool>()) continue;
+    ASSERT_TRUE(j.contains("parameters")) << j["id"];
+    EXPECT_EQ(j["parameters"]["engine"], "box2d_v2_4");
+    // Box2D 2.4 takes k and c as they are: the backend's fields are the joint def's stiffness and damping.
+    const json& exported = j["engines"]["box2d_v2_4"]["parameters"];
+    for (auto it = exported.begin(); it != exported.end(); ++it) {
+      if (it.key().find("::stiffness") == std::string::npos && it.key().find("::damping") == std::string::npos) continue;
+      ASSERT_TRUE(j["parameters"]["values"].contains(it.key())) << j["id"] << " " << it.key();
+      EXPECT_NEAR(j["parameters"]["values"][it.key()].get<double>(), it.value().get<double>(), 1e-9 * std::abs(it.value().get<double>()))
+          << j["id"] << " " << it.key();
+    }
+    ++springs;
+  }
+  EXPECT_GE(springs, 1);
+}
+
+TEST(Simulate, EngineSettingsRunAndUnknownEnginesOrSettingsAreRefused) {
+  const json out = run_simulate({{"preset", "buddhas"}, {"engine_settings", json::object()}}, kPresets);
+  EXPECT_EQ(out["engine"]["settings"].size(), engines::find_scene_backend("box2d_v2_4")->settings.size());
+  const auto refused = [](const json& request) {
+    try {
+      run_simulate(request, kPresets);
+    } catch (const Problem& p) {
+      EXPECT_EQ(p.status, 422);
+      return p.field + ": " + p.detail;
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(refused({{"preset", "buddhas"}, {"engine", "havok"}}).rfind("engine: is not a scene engine of this build: one of \"box2d_v2_4\"", 0), 0u);
+  EXPECT_EQ(refused({{"preset", "buddhas"}, {"engine_settings", {{"noSuchSetting", 1}}}}).rfind("engine_settings.noSuchSetting: ", 0), 0u);
+  // Box2D 2.4's iterations are the scene's world fields, not engine settings.
+  EXPECT_EQ(refused({{"preset", "buddhas"}, {"engine_settings", {{"velocityIterations", 8}}}}).rfind("engine_settings.velocityIterations: ", 0), 0u);
+  // A bare scene carries the engine beside its own keys.
+  json bare = app::load_preset(kPresets, "buddhas");
+  bare.erase("expectations");
+  bare["engine"] = "box2d_v2_4";
+  EXPECT_EQ(run_simulate(bare, kPresets)["engine"]["name"], "box2d_v2_4");
+}
+
+// A scene the engine cannot represent is the backend's refusal: 422 naming the scene feature and the engine,
+// never a run in another engine; one it can runs there and says so.
+TEST(Simulate, AnEnginesRefusalNamesTheFeatureAndTheEngine) {
+  try {
+    run_simulate({{"preset", "mouse"}, {"engine", "bullet"}}, kPresets);
+    ADD_FAILURE() << "bullet ran the capped mouse";
+  } catch (const Problem& p) {
+    EXPECT_EQ(p.status, 422);
+    EXPECT_EQ(p.field, "joints.0.max_force");
+    EXPECT_NE(p.detail.find("bullet"), std::string::npos) << p.detail;
+  }
+  const json ode = run_simulate({{"preset", "buddhas"}, {"engine", "ode"}}, kPresets);
+  EXPECT_EQ(ode["engine"]["name"], "ode");
+  EXPECT_NE(std::find(ode["stages"].begin(), ode["stages"].end(), "engine_step"), ode["stages"].end());
+  EXPECT_EQ(std::find(ode["stages"].begin(), ode["stages"].end(), "box2d_step"), ode["stages"].end());
+  for (const json& j : ode["joints"]) {
+    if (j.contains("parameters")) EXPECT_EQ(j["parameters"]["engine"], "ode") << j["id"];
+  }
+}
+
+TEST(Simulate, TheSceneEnginesIndexListsEveryBackendWithItsSettings) {
+  const json index = scene_engines_index();
+  const auto all = engines::scene_backends();
+  ASSERT_EQ(index["engines"].size(), all.size());
+  EXPECT_EQ(index["engines"][0]["name"], "box2d_v2_4");
+  EXPECT_TRUE(index["engines"][0]["default"].get<bool>());
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const json& e = index["engines"][i];
+    EXPECT_EQ(e["name"], std::string(all[i]->name));
+    EXPECT_EQ(e["version"], std::string(all[i]->version));
+    EXPECT_EQ(e["default"].get<bool>(), i == 0);
+    ASSERT_EQ(e["settings"].size(), all[i]->settings.size());
+    for (std::size_t k = 0; k < all[i]->settings.size(); ++k) {
+      EXPECT_EQ(e["settings"][k]["name"], std::string(all[i]->settings[k].name));
+      EXPECT_EQ(e["settings"][k]["min"], all[i]->settings[k].min);
+      EXPECT_EQ(e["settings"][k]["max"], all[i]->settings[k].max);
+    }
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -133,4 +134,28 @@ TEST_F(RenderCommand, RefusesWithAProblemNamingTheField) {
 }
 
 }  // namespace
+// `softtune render --engine` (issue 32): the frames come from that engine's run, named in the answer; an unknown
+// engine is refused naming `engine` before anything renders.
+TEST_F(RenderCommand, TheEngineFlagRendersThatEnginesRun) {
+  std::string out, err;
+  ASSERT_EQ(run({"--preset", "vehicle_per_spring", "--engine", "ode", "--frames", "3", "--size", "320x180", "--out", dir.string()},
+                &out, &err),
+            0) << err;
+  const auto doc = nlohmann::json::parse(out);
+  EXPECT_EQ(doc["engine"]["name"], "ode");
+  ASSERT_EQ(doc["frames"].size(), 3u);
+  const auto& stages = doc["stages"];
+  EXPECT_NE(std::find(stages.begin(), stages.end(), "engine_step"), stages.end()) << stages;
+  EXPECT_EQ(std::find(stages.begin(), stages.end(), "box2d_step"), stages.end()) << stages;
+  std::ifstream in(dir / "frame_0002.png", std::ios::binary);
+  ASSERT_TRUE(in);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  EXPECT_EQ(render::test::decode_png(bytes.str()).width, 320);
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(run({"--preset", "vehicle_per_spring", "--engine", "havok", "--out", dir.string()}, nullptr, &err), 2);
+  EXPECT_NE(err.find("\"engine\""), std::string::npos) << err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "frame_0000.png"));
+}
+
 }  // namespace softtune::codec

@@ -48,3 +48,16 @@ expect_problem(--preset simulate --presets ${PRESETS})  # neither --preset nor -
 expect_problem(--frame-stride simulate --preset oscillator --presets ${PRESETS} --frame-stride often)
 file(WRITE ${WORK}/list.json "[1, 2]")
 expect_problem(--request simulate --request ${WORK}/list.json --presets ${PRESETS})
+
+# --engine (issue 32): the default engine named runs the scene and the answer says which engine ran; an
+# unknown engine or a malformed --engine-settings exits 2 naming it.
+expect_run(0 simulate --preset buddhas --presets ${PRESETS} --engine box2d_v2_4)
+string(JSON engine GET "${out}" engine name)
+string(JSON version GET "${out}" engine version)
+string(JSON stages GET "${out}" stages)
+if(NOT engine STREQUAL "box2d_v2_4" OR version STREQUAL "" OR NOT stages MATCHES "box2d_step")
+  message(FATAL_ERROR "--engine box2d_v2_4: engine ${engine}, version '${version}', stages ${stages}")
+endif()
+expect_problem(engine simulate --preset buddhas --presets ${PRESETS} --engine havok)
+expect_problem(--engine-settings simulate --preset buddhas --presets ${PRESETS} --engine-settings iterations)
+expect_problem(engine_settings.iterations simulate --preset buddhas --presets ${PRESETS} --engine-settings iterations=4)

@@ -104,6 +104,38 @@ TEST(CapabilityRoutes, ModesAreTheCliAnswerAndBadOptionsNameTheField) {
                  "/api/v1/modes", "post");
 }
 
+// `engine` on the scene routes (issue 32): the default engine named answers what the app answers and says
+// which engine ran; an unknown engine or setting is a 422 naming it; the engines index conforms.
+TEST(CapabilityRoutes, SceneRoutesTakeTheEngineAndRefuseUnknownOnes) {
+  TestServer s(quick_options(), presets_config());
+  const json request = {{"preset", "buddhas"}, {"engine", "box2d_v2_4"}};
+  auto r = s.client().Post("/api/v1/simulate", request.dump(), kJson);
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const json doc = json::parse(r->body);
+  EXPECT_EQ(doc, softtune::app::run_simulate(request, softtune::http::testing::kRepositoryPresets));
+  EXPECT_EQ(doc["engine"]["name"], "box2d_v2_4");
+  EXPECT_EQ(conformance_error("/api/v1/simulate", "post", 200, kJson, doc), "");
+  expect_problem(s.client().Post("/api/v1/simulate", R"({"preset": "buddhas", "engine": "havok"})", kJson), 422, "engine",
+                 "/api/v1/simulate", "post");
+  expect_problem(s.client().Post("/api/v1/simulate", R"({"preset": "buddhas", "engine_settings": {"noSuchSetting": 1}})", kJson),
+                 422, "engine_settings.noSuchSetting", "/api/v1/simulate", "post");
+  expect_problem(s.client().Post("/api/v1/modes", R"({"preset": "vehicle", "engine": "havok"})", kJson), 422, "engine",
+                 "/api/v1/modes", "post");
+  expect_problem(s.client().Post("/api/v1/check", R"({"presets": ["mouse"], "engine": "havok"})", kJson), 422, "engine",
+                 "/api/v1/check", "post");
+  expect_problem(s.client().Post("/api/v1/preview", R"({"preset": "mouse", "frames": 4, "engine": "havok"})", kJson), 422,
+                 "engine", "/api/v1/preview", "post");
+
+  auto engines = s.client().Get("/api/v1/scene-engines");
+  ASSERT_TRUE(engines);
+  ASSERT_EQ(engines->status, 200) << engines->body;
+  const json index = json::parse(engines->body);
+  EXPECT_EQ(index, softtune::app::scene_engines_index());
+  EXPECT_EQ(index["engines"][0]["name"], "box2d_v2_4");
+  EXPECT_EQ(conformance_error("/api/v1/scene-engines", "get", 200, kJson, index), "");
+}
+
 TEST(CapabilityRoutes, PresetsListAndOnePreset) {
   TestServer s(quick_options(), presets_config());
   auto list = s.client().Get("/api/v1/presets");

@@ -200,6 +200,8 @@ inline std::vector<Case> all_cases(const std::string& presets_dir) {
   scene.erase("description");
   route("simulate", json{{"preset", "oscillator"}, {"mass_model", "effective"}, {"frames", true}, {"frame_stride", 5}});
   route("simulate", json{{"scene", scene}});
+  // The scene engine (issue 32): a name from GET /api/v1/scene-engines and that engine's own settings.
+  route("simulate", json{{"preset", "oscillator"}, {"engine", "box2d_v2_4"}, {"engine_settings", json::object()}});
   whole_body(out, "simulate", json{{"preset", "oscillator"}}, "preset",
              json{{"preset", "oscillator"}, {"scene", scene}}.dump());
 
@@ -217,6 +219,7 @@ inline std::vector<Case> all_cases(const std::string& presets_dir) {
 
   route("preview", json{{"preset", "oscillator"}, {"frames", 12}, {"size", "320x180"}, {"filmstrip_every", 3}, {"wait", true}});
   route("preview", json{{"frequency_hz", 2}, {"damping_ratio", 0.2}, {"effective_mass", 1}, {"frames", 8}});
+  route("preview", json{{"preset", "oscillator"}, {"frames", 4}, {"engine", "box2d_v2_4"}, {"engine_settings", json::object()}});
   whole_body(out, "preview", json{{"preset", "oscillator"}, {"frames", 12}}, "preset",
              R"({"preset": "oscillator", "frequency_hz": 2, "damping_ratio": 0.2, "effective_mass": 1})");
 

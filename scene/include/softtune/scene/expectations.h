@@ -25,7 +25,8 @@ struct CheckResult {
 /// The figure an expectation bounds, from one run; empty when it is undefined (no fit, no request, ...).
 std::optional<double> metric_value(const Expectation& e, const SceneResult& run);
 
-/// Runs and checks. `stages` of runs[0] gain `expectations`.
-CheckResult check_scene(const Scene& scene);
+/// Runs and checks, in the engine of `engine` (its backend and engine_settings; the rest is ignored: the mass
+/// models are the expectations'). `stages` of runs[0] gain `expectations`.
+CheckResult check_scene(const Scene& scene, const RunOptions& engine = {});
 
 }  // namespace softtune::scene
