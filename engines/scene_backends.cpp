@@ -5,8 +5,10 @@
 #include <array>
 
 #include "bullet_scene.h"
+#include "jolt_scene.h"
 #include "mujoco_scene.h"
 #include "ode_scene.h"
+#include "rapier_scene.h"
 #include "softtune/scene/box2d_backend.h"
 
 namespace softtune::engines {
@@ -17,6 +19,8 @@ std::span<const scene::SceneBackend* const> scene_backends() {
       &scene::kBulletSceneBackend,
       &scene::kOdeSceneBackend,
       &kMujocoSceneBackend,
+      &kJoltSceneBackend,
+      &kRapierSceneBackend,
   };
   return kBackends;
 }

@@ -20,11 +20,8 @@
 
 #include "app/preset_store.h"
 #include "codec/scene_codec.h"
-#include "softtune/scene/box2d_backend.h"
+#include "softtune/engines/scene_backends.h"
 #include "softtune/scene/runner.h"
-#include "bullet_scene.h"
-#include "mujoco_scene.h"
-#include "ode_scene.h"
 #include "../../presets_dir.h"
 
 namespace softtune::scene {
@@ -32,13 +29,8 @@ namespace {
 
 using test_support::kPresets;
 
-// The backends under test. Until the registry (find_scene_backend, spine A of issue #32) lands, this list;
-// then every registered backend.
-std::span<const SceneBackend* const> conformance_backends() {
-  static const SceneBackend* const kAll[] = {&kBox2DV24SceneBackend, &kBulletSceneBackend, &kOdeSceneBackend,
-                                             &engines::kMujocoSceneBackend};
-  return kAll;
-}
+// The backends under test: every one this build registers (engines/scene_backends.cpp).
+std::span<const SceneBackend* const> conformance_backends() { return engines::scene_backends(); }
 
 // Presets whose tuned probe an engine does not bring within 3 % / 0.05, and why. Each must still miss (a gap
 // that closes is taken off this list), and nothing else may join it unnoticed.
