@@ -9,6 +9,8 @@
 #include <set>
 #include <utility>
 
+#include "softtune/scene/box2d_backend.h"
+
 namespace softtune::app {
 
 namespace {
@@ -399,6 +401,10 @@ render::FrameSet scene_frames(const scene::Scene& scene, const std::vector<scene
   for (int i = 0; i < count; ++i) {
     set.frames.push_back(scene_frame(scene, snapshots, i, layers));
     set.frames.back().legend = legend;
+    // Frames from another engine's run say so in the settings line; Box2D 2.4's, the default, keep it as it was.
+    if (result && result->engine != scene::kBox2DV24SceneBackend.name) {
+      set.frames.back().settings = result->engine + " \u00b7 " + set.frames.back().settings;
+    }
     if (inset) {
       set.frames.back().inset = inset;
       set.frames.back().inset->cursor_s = snapshots[i].time_s;

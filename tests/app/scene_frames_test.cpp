@@ -13,6 +13,7 @@
 #include "softtune/render/camera_path.h"
 #include "softtune/render/frame_schedule.h"
 #include "softtune/render/tessellate.h"
+#include "softtune/engines/scene_backends.h"
 #include "softtune/scene/runner.h"
 #include "../presets_dir.h"
 
@@ -278,6 +279,24 @@ TEST(SceneFrames, TextLandsInsideTheTitleBand) {
         }
       }
     }
+  }
+}
+
+// Frames from another engine's run name it first in their settings line; Box2D 2.4's keep theirs unchanged.
+TEST(SceneFrames, AnotherEnginesFramesNameIt) {
+  const scene::Scene s = codec::decode_scene(load_preset(kPresets, "buddhas"));
+  for (const char* name : {"box2d_v2_4", "ode"}) {
+    scene::RunOptions options;
+    options.record_frames = true;
+    options.record_at = {0, 30};
+    options.backend = engines::find_scene_backend(name);
+    ASSERT_TRUE(options.backend) << name;
+    const scene::SceneResult result = scene::run_scene(s, options);
+    ASSERT_FALSE(result.error) << result.error->field;
+    const render::FrameSet set = scene_frames(s, result.snapshots, &result, default_layers(s));
+    ASSERT_EQ(set.frames.size(), 2u);
+    const bool named = set.frames[1].settings.rfind(std::string(name) + " \u00b7 ", 0) == 0;
+    EXPECT_EQ(named, std::string(name) != "box2d_v2_4") << set.frames[1].settings;
   }
 }
 
