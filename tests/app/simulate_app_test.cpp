@@ -275,7 +275,9 @@ TEST(Simulate, AnEnginesRefusalNamesTheFeatureAndTheEngine) {
   EXPECT_NE(std::find(ode["stages"].begin(), ode["stages"].end(), "engine_step"), ode["stages"].end());
   EXPECT_EQ(std::find(ode["stages"].begin(), ode["stages"].end(), "box2d_step"), ode["stages"].end());
   for (const json& j : ode["joints"]) {
-    if (j.contains("parameters")) EXPECT_EQ(j["parameters"]["engine"], "ode") << j["id"];
+    if (j.contains("parameters")) {
+      EXPECT_EQ(j["parameters"]["engine"], "ode") << j["id"];
+    }
   }
 }
 
