@@ -203,7 +203,7 @@ std::unique_ptr<SceneWorld> build_world(const Scene& scene, const RunOptions& op
     r.error = e;
     return nullptr;
   }
-  SceneBuild build{&scene, {}, settings};
+  SceneBuild build{&scene, {}, settings, options.record_frames};
   r.joint_fields.resize(scene.joints.size());
   for (std::size_t i = 0; i < scene.joints.size(); ++i) {
     JointTuning& t = r.joints[i];

@@ -51,6 +51,9 @@ struct SceneBuild {
   /// untuned distance rod, a weld's rigid rotation).
   std::vector<std::optional<JointSpring>> springs;
   engines::SettingValues settings;                ///< indexed like the backend's settings, within their ranges
+  /// The run reads contacts() (it records snapshots). A backend may step ahead of the frame it was asked for
+  /// only when this is false: contacts must be those of the frame just stepped.
+  bool contacts = false;
 };
 
 /// A scene built in one engine. Not copyable: it owns the engine's world.
