@@ -15,6 +15,7 @@
 #include "softtune/engines/mujoco.h"
 #include "softtune/scene/scene_geometry.h"
 #include "softtune/support/run_limit.h"
+#include "softtune/support/xml_escape.h"
 
 namespace softtune::engines {
 namespace {
@@ -52,20 +53,6 @@ int index_of(const Scene& s, const std::string& id) {
     if (s.bodies[i].id == id) return static_cast<int>(i);
   }
   return -1;
-}
-
-std::string xml_text(std::string_view v) {
-  std::string out;
-  for (char c : v) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 Eigen::Vector2d rotate(const Eigen::Vector2d& v, double angle) {
@@ -190,7 +177,7 @@ class Writer {
     }
     std::ostringstream& o = x_.s;
     const double h = step_size(s_.world.fps, s_.world.substeps);
-    o << "<mujoco model=\"" << xml_text(s_.name) << "\">\n"
+    o << "<mujoco model=\"" << support::xml_escape(s_.name) << "\">\n"
       << "  <option timestep=\"" << h << "\" gravity=\"" << x_.v3(s_.world.gravity) << "\" integrator=\""
       << choice(b_, kMujocoSceneIntegrator) << "\" iterations=\"" << setting(b_, kMujocoSceneIterations)
       << "\" solver=\"" << choice(b_, kMujocoSceneSolver) << "\" cone=\"" << choice(b_, kMujocoSceneCone)
@@ -199,7 +186,7 @@ class Writer {
     meshes();
     o << "  <worldbody>\n";
     for (const JointSettings& j : s_.joints) {
-      if (j.kind == JointKind::mouse) o << "    <site name=\"" << xml_text(j.id) << "/target\" pos=\"" << x_.v3(j.target) << "\"/>\n";
+      if (j.kind == JointKind::mouse) o << "    <site name=\"" << support::xml_escape(j.id) << "/target\" pos=\"" << x_.v3(j.target) << "\"/>\n";
     }
     for (std::size_t i = 0; i < s_.bodies.size(); ++i) {
       if (t_.parent[i] < 0) body(static_cast<int>(i), 2);
@@ -221,7 +208,7 @@ class Writer {
       if (body.shape.kind != scene::ShapeKind::polygon) continue;
       if (!any) o << "  <asset>\n";
       any = true;
-      o << "    <mesh name=\"" << xml_text(body.id) << "\" vertex=\"";
+      o << "    <mesh name=\"" << support::xml_escape(body.id) << "\" vertex=\"";
       for (const Eigen::Vector2d& v : body.shape.vertices) {
         o << v.x() << ' ' << -kHalfDepth << ' ' << v.y() << ' ' << v.x() << ' ' << kHalfDepth << ' ' << v.y() << ' ';
       }
@@ -238,14 +225,14 @@ class Writer {
     const Eigen::Vector2d parent_pos = p >= 0 ? s_.bodies[p].position : Eigen::Vector2d(0, 0);
     const double parent_angle = p >= 0 ? s_.bodies[p].angle : 0.0;
     const Eigen::Vector2d rel = rotate(body.position - parent_pos, -parent_angle);
-    o << in << "<body name=\"" << xml_text(body.id) << "\" pos=\"" << x_.v3(rel) << "\" quat=\""
+    o << in << "<body name=\"" << support::xml_escape(body.id) << "\" pos=\"" << x_.v3(rel) << "\" quat=\""
       << quat_of(body.angle - parent_angle) << "\">\n";
     // A world direction or point in this body's frame at the start.
     auto local_dir = [&](const Eigen::Vector2d& d) { return rotate(d, -body.angle); };
     auto local_point = [&](const Eigen::Vector2d& w) { return rotate(w - body.position, -body.angle); };
     const std::string hinge_axis = "axis=\"0 -1 0\"";
     if (!body.is_static && p < 0 && t_.nested_by[i] < 0) {
-      const std::string id = xml_text(body.id);
+      const std::string id = support::xml_escape(body.id);
       o << in << "  <joint name=\"" << id << "/x\" type=\"slide\" axis=\"" << x_.v3(local_dir({1, 0})) << "\"/>\n"
         << in << "  <joint name=\"" << id << "/z\" type=\"slide\" axis=\"" << x_.v3(local_dir({0, 1})) << "\"/>\n";
       if (!t_.hinge[i].empty()) o << in << "  <joint name=\"" << id << "/rot\" type=\"hinge\" " << hinge_axis << "/>\n";
@@ -257,14 +244,14 @@ class Writer {
       soft.precision(17);
       if (spring) soft << " stiffness=\"" << spring->stiffness << "\" damping=\"" << spring->damping << '"';
       if (j.kind == JointKind::wheel) {
-        o << in << "  <joint name=\"" << xml_text(j.id) << "\" type=\"slide\" pos=\"" << x_.v3(local_point(j.anchor_b))
+        o << in << "  <joint name=\"" << support::xml_escape(j.id) << "\" type=\"slide\" pos=\"" << x_.v3(local_point(j.anchor_b))
           << "\" axis=\"" << x_.v3(local_dir(j.axis.normalized())) << '"' << soft.str() << "/>\n";
         if (!t_.hinge[i].empty()) {
-          o << in << "  <joint name=\"" << xml_text(t_.hinge[i]) << "\" type=\"hinge\" pos=\""
+          o << in << "  <joint name=\"" << support::xml_escape(t_.hinge[i]) << "\" type=\"hinge\" pos=\""
             << x_.v3(local_point(j.anchor_b)) << "\" " << hinge_axis << "/>\n";
         }
       } else if (!t_.hinge[i].empty()) {  // revolute, soft weld: a hinge at the anchor
-        o << in << "  <joint name=\"" << xml_text(j.id) << "\" type=\"hinge\" pos=\"" << x_.v3(local_point(j.anchor_a))
+        o << in << "  <joint name=\"" << support::xml_escape(j.id) << "\" type=\"hinge\" pos=\"" << x_.v3(local_point(j.anchor_a))
           << "\" " << hinge_axis << soft.str() << "/>\n";
       }
     }
@@ -275,17 +262,17 @@ class Writer {
       o << in << "  <inertial pos=\"" << x_.v3(md.local_centre) << "\" mass=\"" << md.mass << "\" diaginertia=\""
         << inertia << ' ' << inertia << ' ' << inertia << "\"/>\n";
     }
-    o << in << "  <geom name=\"" << xml_text(body.id) << "\" ";
+    o << in << "  <geom name=\"" << support::xml_escape(body.id) << "\" ";
     switch (body.shape.kind) {
       case scene::ShapeKind::box:
         o << "type=\"box\" size=\"" << body.shape.width / 2 << ' ' << kHalfDepth << ' ' << body.shape.height / 2 << '"';
         break;
       case scene::ShapeKind::circle: o << "type=\"sphere\" size=\"" << body.shape.radius << '"'; break;
-      case scene::ShapeKind::polygon: o << "type=\"mesh\" mesh=\"" << xml_text(body.id) << '"'; break;
+      case scene::ShapeKind::polygon: o << "type=\"mesh\" mesh=\"" << support::xml_escape(body.id) << '"'; break;
     }
     o << " friction=\"" << body.friction << " 0.005 0.0001\"/>\n";
     for (const Site& site : sites_[i]) {
-      o << in << "  <site name=\"" << xml_text(site.name) << "\" pos=\"" << x_.v3(local_point(site.world)) << "\"/>\n";
+      o << in << "  <site name=\"" << support::xml_escape(site.name) << "\" pos=\"" << x_.v3(local_point(site.world)) << "\"/>\n";
     }
     for (std::size_t c = 0; c < s_.bodies.size(); ++c) {
       if (t_.parent[c] == i) this->body(static_cast<int>(c), depth + 1);
@@ -301,7 +288,7 @@ class Writer {
       if (j.kind != JointKind::distance && j.kind != JointKind::mouse) continue;
       if (!any) o << "  <tendon>\n";
       any = true;
-      const std::string id = xml_text(j.id);
+      const std::string id = support::xml_escape(j.id);
       o << "    <spatial name=\"" << id << '"';
       if (j.kind == JointKind::distance && b_.springs[i]) {
         o << " stiffness=\"" << b_.springs[i]->stiffness << "\" damping=\"" << b_.springs[i]->damping
@@ -323,11 +310,11 @@ class Writer {
         // A rigid rod: the tendon's length held at its rest length; polycoef[0] is the offset from the length
         // at the start (engine_core_constraint.c, mj_instantiateEquality, mjEQ_TENDON: L - L0 - data[0]).
         const double start = (j.anchor_b - j.anchor_a).norm();
-        e << "    <tendon tendon1=\"" << xml_text(j.id) << "\" polycoef=\"" << j.length.value_or(start) - start
+        e << "    <tendon tendon1=\"" << support::xml_escape(j.id) << "\" polycoef=\"" << j.length.value_or(start) - start
           << " 0 0 0 0\"/>\n";
       } else if (j.kind == JointKind::revolute && t_.nested_by[index_of(s_, j.body_b)] != static_cast<int>(i)) {
         const BodySettings& a = s_.bodies[index_of(s_, j.body_a)];
-        e << "    <connect body1=\"" << xml_text(j.body_a) << "\" body2=\"" << xml_text(j.body_b) << "\" anchor=\""
+        e << "    <connect body1=\"" << support::xml_escape(j.body_a) << "\" body2=\"" << support::xml_escape(j.body_b) << "\" anchor=\""
           << x_.v3(rotate(j.anchor_a - a.position, -a.angle)) << "\"/>\n";
       }
     }
@@ -341,7 +328,7 @@ class Writer {
     const double h = step_size(s_.world.fps, s_.world.substeps);
     for (std::size_t i = 0; i < s_.joints.size(); ++i) {
       const JointSettings& j = s_.joints[i];
-      const std::string id = xml_text(j.id);
+      const std::string id = support::xml_escape(j.id);
       if (j.kind == JointKind::wheel && j.max_motor_torque > 0.0 && !t_.hinge[index_of(s_, j.body_b)].empty()) {
         a << "    <velocity name=\"" << id << "/motor\" joint=\"" << id << "/spin\" kv=\""
           << motor_gain(s_, j, h) << "\" forcelimited=\"true\" forcerange=\"" << -j.max_motor_torque << ' '
@@ -366,7 +353,7 @@ class Writer {
       const int a = index_of(s_, j.body_a), b = index_of(s_, j.body_b);
       if (s_.bodies[a].is_static && s_.bodies[b].is_static) continue;
       if (excluded.insert({std::min(a, b), std::max(a, b)}).second) {
-        c << "    <exclude body1=\"" << xml_text(j.body_a) << "\" body2=\"" << xml_text(j.body_b) << "\"/>\n";
+        c << "    <exclude body1=\"" << support::xml_escape(j.body_a) << "\" body2=\"" << support::xml_escape(j.body_b) << "\"/>\n";
       }
     }
     // Box2D's b2MixFriction, sqrt(fa fb), where MuJoCo's max(fa, fb) differs (fa != fb).
@@ -376,7 +363,7 @@ class Writer {
         if ((ba.is_static && bb.is_static) || ba.friction == bb.friction) continue;
         if (excluded.count({static_cast<int>(a), static_cast<int>(b)})) continue;
         const double f = std::sqrt(ba.friction * bb.friction);
-        c << "    <pair geom1=\"" << xml_text(ba.id) << "\" geom2=\"" << xml_text(bb.id) << "\" friction=\"" << f << ' '
+        c << "    <pair geom1=\"" << support::xml_escape(ba.id) << "\" geom2=\"" << support::xml_escape(bb.id) << "\" friction=\"" << f << ' '
           << f << " 0.005 0.0001 0.0001\"/>\n";
       }
     }

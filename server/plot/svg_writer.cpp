@@ -6,6 +6,8 @@
 #include <limits>
 #include <sstream>
 
+#include "softtune/support/xml_escape.h"
+
 namespace softtune::plot {
 namespace {
 
@@ -15,20 +17,6 @@ constexpr double kLegendX = kLeft + kPlotWidth + 18;
 constexpr const char* kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b",
                                     "#e377c2", "#17becf", "#7f7f7f", "#bcbd22", "#393b79", "#637939"};
 constexpr int kPaletteSize = sizeof(kPalette) / sizeof(kPalette[0]);
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string num(double v) {
   char b[32];
@@ -133,7 +121,7 @@ PanelFrame panel_frame(const Plot& p, double y0) {
 // Title, the plot box and the clip path the series are drawn through.
 void draw_box(std::ostringstream& o, const PanelFrame& f, int index) {
   o << "<text x=\"" << num(kLeft + kPlotWidth / 2) << "\" y=\"" << num(f.y0 + 26)
-    << "\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">" << escape(f.p.title) << "</text>\n";
+    << "\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">" << support::xml_escape(f.p.title) << "</text>\n";
   o << "<clipPath id=\"clip" << index << "\"><rect x=\"" << num(kLeft) << "\" y=\"" << num(f.top) << "\" width=\""
     << num(kPlotWidth) << "\" height=\"" << num(kPlotHeight) << "\"/></clipPath>\n";
   o << "<rect x=\"" << num(kLeft) << "\" y=\"" << num(f.top) << "\" width=\"" << num(kPlotWidth) << "\" height=\""
@@ -159,10 +147,10 @@ void draw_axes(std::ostringstream& o, const PanelFrame& f) {
       << tick_label(t) << "</text>\n";
   }
   o << "<text x=\"" << num(kLeft + kPlotWidth / 2) << "\" y=\"" << num(top + kPlotHeight + 36)
-    << "\" text-anchor=\"middle\" font-size=\"13\">" << escape(axis_title(p.x)) << "</text>\n";
+    << "\" text-anchor=\"middle\" font-size=\"13\">" << support::xml_escape(axis_title(p.x)) << "</text>\n";
   const double ymid = top + kPlotHeight / 2;
   o << "<text x=\"18\" y=\"" << num(ymid) << "\" text-anchor=\"middle\" font-size=\"13\" transform=\"rotate(-90 18 "
-    << num(ymid) << ")\">" << escape(axis_title(p.y)) << "</text>\n";
+    << num(ymid) << ")\">" << support::xml_escape(axis_title(p.y)) << "</text>\n";
 }
 
 // Reference lines and every series (lines broken at unusable points, markers), inside the clip path.
@@ -209,7 +197,7 @@ void draw_legend(std::ostringstream& o, const PanelFrame& f) {
     o << "<line x1=\"" << num(kLegendX) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(kLegendX + 20) << "\" y2=\"" << num(ly)
       << "\" stroke=\"" << color << "\" stroke-width=\"3\"" << (f.p.series[k].dashed ? " stroke-dasharray=\"5 3\"" : "") << "/>\n";
     o << "<text x=\"" << num(kLegendX + 26) << "\" y=\"" << num(ly + 4) << "\" font-size=\"11\">"
-      << escape(f.p.series[k].name) << "</text>\n";
+      << support::xml_escape(f.p.series[k].name) << "</text>\n";
     ly += 16;
   }
 }
